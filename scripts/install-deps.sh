@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages the project builds and runs with. Idempotent: does
+# nothing (and needs no network) when every package is already present.
+set -euo pipefail
+packages=(
+  build-essential cmake pkg-config
+  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libglm-dev
+  libopenvdb-dev libboost-iostreams-dev libtinygltf-dev libstb-dev nlohmann-json3-dev
+  libopenimageio-dev libopencv-core-dev libembree-dev libtbb-dev libcli11-dev
+  libgtest-dev libbenchmark-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

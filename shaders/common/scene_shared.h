@@ -1,0 +1,49 @@
+// The scene as uploaded to the GPU (src/render/gpu_scene.cpp) and read by every shader
+// that touches triangles: the G-buffer, the shadow maps and the voxelizer.
+#pragma once
+#include "common/shared_types.h"
+
+VCT_BEGIN_NAMESPACE
+
+// Shader storage binding points of the scene buffers.
+VCT_CONST int SCENE_BINDING_VERTICES = 0;   // GpuVertex[vertexCount]
+VCT_CONST int SCENE_BINDING_INDICES = 1;    // uint[3 * triangleCount]
+VCT_CONST int SCENE_BINDING_TRIMATERIAL = 2;  // uint[triangleCount]
+VCT_CONST int SCENE_BINDING_MATERIALS = 3;  // GpuMaterial[materialCount]
+VCT_CONST int SCENE_BINDING_LIGHTS = 4;     // GpuLight[lightCount]
+// Texture unit of the scene's texture array (sRGB RGBA8, one layer per glTF image).
+VCT_CONST int SCENE_UNIT_TEXTURES = 8;
+// Every scene texture is resampled to this square size in the array (mipmapped).
+VCT_CONST int SCENE_TEXTURE_SIZE = 512;
+
+struct GpuVertex {
+    vec4 position;  // xyz world, w = 1
+    vec4 normal;    // xyz world unit normal, w = 0
+    vec4 uv;        // xy texcoord 0
+};
+
+VCT_CONST int MATERIAL_DOUBLE_SIDED = 1;
+VCT_CONST int MATERIAL_ALPHA_MASK = 2;
+
+struct GpuMaterial {
+    vec4 baseColor;       // linear RGBA factor
+    vec4 emissive;        // linear RGB factor x emissive_strength, w unused
+    int baseColorLayer;   // layer in the texture array, -1 for none
+    int emissiveLayer;    // layer in the texture array, -1 for none
+    int flags;            // MATERIAL_* bits
+    float alphaCutoff;
+};
+
+VCT_CONST int LIGHT_DIRECTIONAL = 0;
+VCT_CONST int LIGHT_POINT = 1;
+VCT_CONST int LIGHT_SPOT = 2;
+
+struct GpuLight {
+    vec4 color;          // rgb = colour x intensity (lux for directional, candela otherwise); w = type
+    vec4 position;       // xyz world (point, spot)
+    vec4 direction;      // xyz world unit direction of travel (directional, spot)
+    vec4 spot;           // x = cos(outer), y = cos(inner), z = shadow layer (-1 none), w = normal bias (world)
+    mat4 shadowClipFromWorld;  // directional and spot: into the shadow map's clip space
+};
+
+VCT_END_NAMESPACE

@@ -1,0 +1,20 @@
+// Lets a header of plain structs and constants compile both as C++ (with GLM) and as GLSL.
+// Shared headers use only vec4/ivec4/uvec4/mat4 members, float/int/uint scalars, and
+// explicit padding, so std430 and C++ layouts agree.
+#pragma once
+#ifdef __cplusplus
+#include <glm/glm.hpp>
+#include <cstdint>
+#define VCT_CONST static constexpr
+namespace vct { namespace gpu {
+using vec2 = glm::vec2; using vec3 = glm::vec3; using vec4 = glm::vec4;
+using ivec4 = glm::ivec4; using uvec4 = glm::uvec4; using mat4 = glm::mat4;
+using uint = std::uint32_t;
+}}  // namespace vct::gpu
+#define VCT_BEGIN_NAMESPACE namespace vct { namespace gpu {
+#define VCT_END_NAMESPACE }}
+#else
+#define VCT_CONST const
+#define VCT_BEGIN_NAMESPACE
+#define VCT_END_NAMESPACE
+#endif

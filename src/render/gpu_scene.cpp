@@ -1,0 +1,1 @@
+#include "render/gpu_scene.h"

@@ -1,0 +1,105 @@
+// The in-memory scene every backend reads: one flat, world-space triangle soup plus
+// materials, textures, punctual lights and cameras. The glTF node hierarchy is baked
+// into world space at load time, so the GL rasterizer, the voxelizer and Embree all
+// index the same arrays and agree on every triangle.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace vct {
+
+struct Bounds3 {
+    glm::vec3 min{std::numeric_limits<float>::max()};
+    glm::vec3 max{-std::numeric_limits<float>::max()};
+
+    void expand(const glm::vec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
+    void expand(const Bounds3& b) { min = glm::min(min, b.min); max = glm::max(max, b.max); }
+    bool empty() const { return min.x > max.x; }
+    glm::vec3 extent() const { return empty() ? glm::vec3(0.f) : max - min; }
+    glm::vec3 center() const { return 0.5f * (min + max); }
+    float maxExtent() const { glm::vec3 e = extent(); return glm::max(e.x, glm::max(e.y, e.z)); }
+};
+
+// 8-bit RGBA texel data as stored in the file (base colour and emissive textures are
+// sRGB-encoded per glTF; decoding to linear happens where they are sampled).
+struct Texture {
+    std::string name;
+    int width = 0;
+    int height = 0;
+    std::vector<uint8_t> rgba;  // width * height * 4, row 0 at the top (glTF uv origin)
+    bool repeatS = true;        // wrap modes: repeat, or clamp-to-edge otherwise
+    bool repeatT = true;
+};
+
+// Lambertian material: glTF pbrMetallicRoughness base colour + emission; metal/roughness
+// are ignored (the renderer is diffuse-only by design).
+struct Material {
+    std::string name;
+    glm::vec4 baseColorFactor{1.f};   // linear RGBA
+    int baseColorTexture = -1;        // index into Scene::textures, -1 for none
+    glm::vec3 emissiveFactor{0.f};    // linear RGB, already multiplied by emissive_strength
+    int emissiveTexture = -1;
+    bool doubleSided = false;
+    bool alphaMask = false;           // alphaMode MASK (tested against alphaCutoff)
+    float alphaCutoff = 0.5f;
+
+    bool isEmissive() const { return emissiveFactor.x > 0.f || emissiveFactor.y > 0.f || emissiveFactor.z > 0.f; }
+};
+
+enum class LightType : int { Directional = 0, Point = 1, Spot = 2 };
+
+// KHR_lights_punctual in world space. Units follow the extension: directional in lux
+// (lm/m^2), point and spot in candela (lm/sr); `color` is already multiplied by intensity.
+struct Light {
+    std::string name;
+    LightType type = LightType::Point;
+    glm::vec3 color{1.f};           // linear RGB radiometric intensity (colour x intensity)
+    glm::vec3 position{0.f};        // world space (point, spot)
+    glm::vec3 direction{0, 0, -1};  // world space, direction the light travels (directional, spot)
+    float range = 0.f;              // 0 = infinite (range is only a culling hint here)
+    float innerConeAngle = 0.f;     // radians (spot)
+    float outerConeAngle = 0.7853982f;
+};
+
+// A perspective camera in world space. Vertical field of view in radians.
+struct Camera {
+    std::string name;
+    glm::vec3 eye{0.f, 0.f, 5.f};
+    glm::vec3 target{0.f};
+    glm::vec3 up{0.f, 1.f, 0.f};
+    float yfov = 0.8f;
+    float znear = 0.01f;
+    float zfar = 1000.f;
+};
+
+struct Scene {
+    std::string path;  // where it came from (for messages), may be empty
+
+    // Vertex arrays, world space; normals are unit length (computed when the file has none).
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<glm::vec2> uvs;          // texcoord 0; (0,0) when absent
+    std::vector<glm::uvec3> triangles;   // indices into the vertex arrays
+    std::vector<uint32_t> triangleMaterial;  // per triangle, index into materials
+    std::vector<uint8_t> triangleOffscreen;  // per triangle: 1 if from a node marked off-screen occluder
+
+    std::vector<Material> materials;
+    std::vector<Texture> textures;
+    std::vector<Light> lights;
+    std::vector<Camera> cameras;
+
+    Bounds3 bounds;
+
+    size_t triangleCount() const { return triangles.size(); }
+    glm::vec3 geometricNormal(size_t tri) const {
+        const glm::uvec3& t = triangles[tri];
+        return glm::normalize(glm::cross(positions[t.y] - positions[t.x], positions[t.z] - positions[t.x]));
+    }
+};
+
+}  // namespace vct
