@@ -94,6 +94,7 @@ struct Scene {
     std::vector<Camera> cameras;
 
     Bounds3 bounds;
+    std::vector<std::string> warnings;  // load-time notes (e.g. degenerate triangles dropped)
 
     size_t triangleCount() const { return triangles.size(); }
     glm::vec3 geometricNormal(size_t tri) const {
