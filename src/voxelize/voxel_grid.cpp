@@ -1,0 +1,33 @@
+#include "voxelize/voxel_grid.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace vct {
+
+VoxelGrid makeGridLayout(const Bounds3& bounds, int maxResolution) {
+    if (maxResolution < 4 || maxResolution > 1024)
+        throw std::invalid_argument("voxel resolution " + std::to_string(maxResolution) + " out of range [4, 1024]");
+    if (bounds.empty()) throw std::invalid_argument("cannot fit a voxel grid to empty bounds");
+    VoxelGrid g;
+    // One voxel of padding on each side: the longest axis spans (maxResolution - 2) voxels.
+    float extent = std::max(bounds.maxExtent(), 1e-30f);
+    g.voxelSize = extent / float(std::max(1, maxResolution - 2));
+    glm::vec3 e = bounds.extent();
+    for (int a = 0; a < 3; ++a)
+        g.resolution[a] = std::clamp(int(std::ceil(e[a] / g.voxelSize)) + 2, 1, maxResolution);
+    g.resolution = glm::max(g.resolution, glm::ivec3(1));
+    glm::vec3 span = glm::vec3(g.resolution) * g.voxelSize;
+    g.origin = bounds.center() - 0.5f * span;
+    g.voxelFromWorld = glm::scale(glm::mat4(1.f), glm::vec3(1.f / g.voxelSize)) *
+                       glm::translate(glm::mat4(1.f), -g.origin);
+    g.worldFromVoxel = glm::inverse(g.voxelFromWorld);
+    int maxRes = std::max(g.resolution.x, std::max(g.resolution.y, g.resolution.z));
+    g.levels = int(std::floor(std::log2(float(maxRes)))) + 1;
+    return g;
+}
+
+}  // namespace vct

@@ -1,0 +1,54 @@
+// The dense voxel grid shared by voxelization (src/voxelize), radiance injection and
+// mip building (src/voxelize), and cone tracing (src/cone). This header is the contract
+// between them.
+//
+// Conventions:
+// - Cubic voxels of edge `voxelSize`; `resolution` voxels per axis; the grid's min corner
+//   at `origin`. Voxel coordinates u = (world - origin) / voxelSize lie in [0, resolution];
+//   texture coordinates are u / resolution (voxel centres at (i + 0.5) / resolution).
+// - All 3D textures use GL_LINEAR filtering with a zero border (CLAMP_TO_BORDER), so
+//   cones leaving the grid see empty space, i.e. the sky.
+// - `opacity` and `radiance` are mipmapped (isotropic, levels = log2(maxres) + 1).
+//   Radiance is PREMULTIPLIED by opacity (rgb = L * alpha, a = alpha), so cone tracing
+//   composites front to back: C += (1 - A) * c; A += (1 - A) * a.
+// - Radiance is the outgoing diffuse radiance of the voxel's surfaces (W/sr/m^2 per
+//   channel): emission + albedo / pi * irradiance. It does not depend on voxel size.
+// - Anisotropic mips (optional): six textures, one per axis direction (+X, -X, +Y, -Y,
+//   +Z, -Z), whose level k holds level k + 1 of the pyramid (half the base resolution at
+//   their level 0), each RGBA16F premultiplied radiance + alpha, composited front to back
+//   along their axis as seen by a cone travelling in that direction (Crassin 2011).
+#pragma once
+
+#include "gl/handles.h"
+#include "scene/scene.h"
+
+#include <array>
+#include <glm/glm.hpp>
+
+namespace vct {
+
+struct VoxelGrid {
+    glm::ivec3 resolution{0};   // voxels per axis
+    float voxelSize = 0.f;      // world units
+    glm::vec3 origin{0.f};      // world position of the grid's min corner
+    int levels = 1;             // mip levels in opacity/radiance
+    glm::mat4 voxelFromWorld{1.f};   // world -> voxel units [0, res]
+    glm::mat4 worldFromVoxel{1.f};
+
+    GlTexture opacity;   // GL_R16F, 3D, mipmapped: covered fraction of the voxel in [0, 1]
+    GlTexture albedo;    // GL_RGBA16F, level 0 only: average linear albedo (rgb), a = 1 where occupied
+    GlTexture normal;    // GL_RGBA16F, level 0 only: average unit normal (xyz), a = 1 where occupied
+    GlTexture emission;  // GL_RGBA16F, level 0 only: average emitted radiance (rgb)
+    GlTexture radiance;  // GL_RGBA16F, 3D, mipmapped, premultiplied; empty until injection
+    bool anisotropic = false;
+    std::array<GlTexture, 6> anisoRadiance;  // see above; empty unless anisotropic
+
+    size_t memoryBytes = 0;  // GPU memory of all textures above
+    size_t occupiedVoxels = 0;  // voxels with opacity > 0 at level 0 (filled by voxelize)
+};
+
+// Fits a grid with cubic voxels to `bounds` (padded by one voxel on each side so surfaces
+// on the boundary stay inside): `maxResolution` voxels along the longest axis.
+VoxelGrid makeGridLayout(const Bounds3& bounds, int maxResolution);
+
+}  // namespace vct
