@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <tbb/parallel_for.h>
+
 #include "eval/validate.h"
 
 namespace vct {
@@ -28,7 +30,8 @@ std::pair<int, int> channelRange(int channel, const Image& image) {
     return channel < 0 ? std::pair<int, int>(0, image.channels) : std::pair<int, int>(channel, channel + 1);
 }
 
-void validatePair(const Image& estimate, const Image& reference, const Image* mask, int channel, double peak) {
+void validatePair(const Image& estimate, const Image& reference, const Image* mask, int channel,
+                  double peak) {
     requireFinite(estimate, "estimate");
     requireFinite(reference, "reference");
     requireSameShape(estimate, "estimate", reference, "reference");
@@ -44,8 +47,9 @@ constexpr double kSsimSigma = 1.5;
 // out = separable Gaussian blur of `in` (w x h) with zero padding outside the image.
 void gaussianBlur(const std::vector<double>& in, std::vector<double>& out, int w, int h,
                   const double* taps) {
+    // Rows are independent, so the parallel loop is deterministic.
     std::vector<double> rows(in.size(), 0.0);
-    for (int y = 0; y < h; ++y)
+    tbb::parallel_for(0, h, [&](int y) {
         for (int x = 0; x < w; ++x) {
             double sum = 0.0;
             for (int i = -kSsimRadius; i <= kSsimRadius; ++i) {
@@ -54,8 +58,9 @@ void gaussianBlur(const std::vector<double>& in, std::vector<double>& out, int w
             }
             rows[size_t(y) * w + x] = sum;
         }
+    });
     out.assign(in.size(), 0.0);
-    for (int y = 0; y < h; ++y)
+    tbb::parallel_for(0, h, [&](int y) {
         for (int x = 0; x < w; ++x) {
             double sum = 0.0;
             for (int i = -kSsimRadius; i <= kSsimRadius; ++i) {
@@ -64,6 +69,7 @@ void gaussianBlur(const std::vector<double>& in, std::vector<double>& out, int w
             }
             out[size_t(y) * w + x] = sum;
         }
+    });
 }
 
 // Mean SSIM of one channel over the valid pixels; inputs already validated.
@@ -132,8 +138,8 @@ double ssimValidated(const Image& e, const Image& r, const Image* mask, int chan
 
 }  // namespace
 
-ErrorMetrics computeErrorMetrics(const Image& estimate, const Image& reference, const Image* mask, int channel,
-                                 double peak) {
+ErrorMetrics computeErrorMetrics(const Image& estimate, const Image& reference, const Image* mask,
+                                 int channel, double peak) {
     validatePair(estimate, reference, mask, channel, peak);
     auto [c0, c1] = channelRange(channel, estimate);
 
@@ -164,7 +170,8 @@ ErrorMetrics computeErrorMetrics(const Image& estimate, const Image& reference, 
     return out;
 }
 
-double computeSsim(const Image& estimate, const Image& reference, const Image* mask, int channel, double peak) {
+double computeSsim(const Image& estimate, const Image& reference, const Image* mask, int channel,
+                   double peak) {
     validatePair(estimate, reference, mask, channel, peak);
     return ssimValidated(estimate, reference, mask, channel, peak);
 }

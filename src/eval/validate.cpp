@@ -9,7 +9,8 @@ namespace vct {
 void requireNonEmpty(const Image& image, const std::string& what) {
     if (image.width <= 0 || image.height <= 0 || image.channels <= 0)
         throw std::invalid_argument(what + ": empty image (" + std::to_string(image.width) + "x" +
-                                    std::to_string(image.height) + "x" + std::to_string(image.channels) + ")");
+                                    std::to_string(image.height) + "x" + std::to_string(image.channels) +
+                                    ")");
     if (image.pixels.size() != size_t(image.width) * size_t(image.height) * size_t(image.channels))
         throw std::invalid_argument(what + ": pixel buffer holds " + std::to_string(image.pixels.size()) +
                                     " floats, expected width*height*channels");
@@ -31,8 +32,8 @@ void requireFinite(const Image& image, const std::string& what) {
 void requireSameShape(const Image& a, const std::string& aName, const Image& b, const std::string& bName) {
     if (a.width != b.width || a.height != b.height || a.channels != b.channels) {
         std::ostringstream msg;
-        msg << aName << " is " << a.width << "x" << a.height << "x" << a.channels << " but " << bName << " is "
-            << b.width << "x" << b.height << "x" << b.channels;
+        msg << aName << " is " << a.width << "x" << a.height << "x" << a.channels << " but " << bName
+            << " is " << b.width << "x" << b.height << "x" << b.channels;
         throw std::invalid_argument(msg.str());
     }
 }
@@ -42,8 +43,8 @@ void requireMaskFits(const Image* mask, const Image& image, const std::string& i
     requireFinite(*mask, "mask");
     if (mask->width != image.width || mask->height != image.height) {
         std::ostringstream msg;
-        msg << "mask is " << mask->width << "x" << mask->height << " but " << imageName << " is " << image.width
-            << "x" << image.height;
+        msg << "mask is " << mask->width << "x" << mask->height << " but " << imageName << " is "
+            << image.width << "x" << image.height;
         throw std::invalid_argument(msg.str());
     }
 }

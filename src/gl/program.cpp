@@ -23,7 +23,9 @@ void expandInto(const std::string& name, std::ostringstream& out, std::set<std::
     std::string line;
     while (std::getline(in, line)) {
         size_t p = line.find_first_not_of(" \t");
-        if (p != std::string::npos && line.compare(p, 8, "#include") == 0) {
+        // Only quoted includes are ours; <...> ones sit in `#ifdef __cplusplus` blocks.
+        if (p != std::string::npos && line.compare(p, 8, "#include") == 0 &&
+            line.find('<', p) == std::string::npos) {
             size_t a = line.find('"', p), b = line.find('"', a + 1);
             if (a == std::string::npos || b == std::string::npos)
                 throw std::runtime_error("bad #include in shader '" + name + "': " + line);

@@ -1,0 +1,62 @@
+// G-buffer access and projection helpers shared by every screen-space AO pass. View space
+// is GL's: camera at the origin looking down -z, so view z grows toward the camera and the
+// linear depth of a point is -z.
+#include "ao/ao_shared.h"
+
+layout(std140, binding = AO_BINDING_VIEW) uniform AoViewBlock { AoViewUniforms aoView; };
+layout(binding = AO_UNIT_POSITION) uniform sampler2D aoGPosition;
+layout(binding = AO_UNIT_NORMAL) uniform sampler2D aoGNormal;
+
+const float AO_PI = 3.14159265358979;
+const float AO_HALF_PI = 1.57079632679490;
+
+ivec2 ao_fullSize() { return aoView.size.zw; }
+ivec2 ao_evalSize() { return aoView.size.xy; }
+
+bool ao_onScreen(ivec2 g) { return all(greaterThanEqual(g, ivec2(0))) && all(lessThan(g, ao_fullSize())); }
+
+// The G-buffer pixel an evaluation pixel stands for (the lower-left one of its block at half res).
+ivec2 ao_gbufferPixel(ivec2 e) { return min(e * int(aoView.noise.y), ao_fullSize() - 1); }
+
+bool ao_isSky(vec4 worldPosition) { return !(worldPosition.w > 0.0); }
+
+vec3 ao_viewFromWorldPoint(vec3 w) { return (aoView.viewFromWorld * vec4(w, 1.0)).xyz; }
+
+// View-space position at G-buffer pixel g; returns false for sky.
+bool ao_fetchViewPosition(ivec2 g, out vec3 p) {
+    vec4 w = texelFetch(aoGPosition, g, 0);
+    p = ao_viewFromWorldPoint(w.xyz);
+    return !ao_isSky(w) && p.z < 0.0;
+}
+
+// Unit view-space shading normal; falls back to facing the eye when the G-buffer's is unusable.
+vec3 ao_fetchViewNormal(ivec2 g, vec3 p) {
+    vec3 n = mat3(aoView.viewFromWorld) * texelFetch(aoGNormal, g, 0).xyz;
+    float len = length(n);
+    return len > 1e-20 && !isnan(len) && !isinf(len) ? n / len : normalize(-p);
+}
+
+vec2 ao_pixelFromView(vec3 p) { return aoView.pixelFromView.xy * p.xy / (-p.z) + aoView.pixelFromView.zw; }
+
+// Direction (not normalized, z = -1) of the eye ray through continuous pixel coordinate c.
+vec3 ao_viewRayThroughPixel(vec2 c) { return vec3((c - aoView.pixelFromView.zw) / aoView.pixelFromView.xy, -1.0); }
+
+// Pixels spanned by a world length at linear depth d (focal length along y).
+float ao_pixelsPerUnit(float d) { return aoView.pixelFromView.y / d; }
+
+// PCG3D (Jarzynski and Olano 2020): a per-pixel hash seeded by the run's seed, so noise is
+// deterministic for a given seed and decorrelated between salts.
+uvec3 ao_pcg3d(uvec3 v) {
+    v = v * 1664525u + 1013904223u;
+    v.x += v.y * v.z; v.y += v.z * v.x; v.z += v.x * v.y;
+    v ^= v >> 16u;
+    v.x += v.y * v.z; v.y += v.z * v.x; v.z += v.x * v.y;
+    return v;
+}
+vec2 ao_pixelNoise(ivec2 g, uint salt) {
+    uvec3 h = ao_pcg3d(uvec3(uvec2(g), aoView.noise.x ^ (salt * 0x9E3779B9u)));
+    return vec2(h.xy >> 8u) * (1.0 / 16777216.0);  // 24-bit uniforms in [0, 1)
+}
+
+// Every pass writes through here: AO in [0, 1], never NaN.
+float ao_sanitize(float a) { return isnan(a) || isinf(a) ? 1.0 : clamp(a, 0.0, 1.0); }

@@ -1,0 +1,19 @@
+// Voxel cone traced ambient occlusion: per pixel, the cone set around the shading normal,
+// each cone limited to distance R; A = 1 - sum_c w_c alpha_c (CONE_AO_LINEAR), which
+// estimates BRIEF section 1's A_R. Sky pixels read 1.
+#include "cone/cone_march.glsl"
+
+layout(local_size_x = CONE_LOCAL_SIZE, local_size_y = CONE_LOCAL_SIZE) in;
+layout(r32f, binding = CONE_IMAGE_OUTPUT) uniform writeonly image2D cone_aoOut;
+
+void main() {
+    ivec2 pix = ivec2(gl_GlobalInvocationID.xy);
+    if (pix.x >= u.image.x || pix.y >= u.image.y) return;
+    vec3 p, n, ng;
+    float ao = 1.0;
+    if (cone_surface(pix, p, n, ng)) {
+        ConeGather g = cone_gather(p, n, ng, u.limits.x, u.limits.z, 0.0);
+        ao = clamp(1.0 - g.occlusion, 0.0, 1.0);
+    }
+    imageStore(cone_aoOut, pix, vec4(ao, 0.0, 0.0, 0.0));
+}

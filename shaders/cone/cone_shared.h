@@ -1,0 +1,80 @@
+// Constants and the uniform block shared by src/cone/*.cpp and shaders/cone/*.glsl (the
+// XeGTAO.h pattern): one std140 struct with explicit vec4 packing, the work-group size used
+// by both `layout(local_size...)` and the dispatch math, texture units, and the DEFAULT_*
+// values of ConeSettings with the reason for each.
+#pragma once
+#include "common/shared_types.h"
+
+#ifdef __cplusplus
+#define CONE_FN inline
+#else
+#define CONE_FN
+#endif
+
+VCT_BEGIN_NAMESPACE
+
+// 8x8 pixels per work group: a square tile keeps neighbouring pixels' cones in the same
+// voxels (texture cache on a GPU, SIMD lanes on llvmpipe).
+VCT_CONST int CONE_LOCAL_SIZE = 8;
+
+VCT_CONST int CONE_MAX_CONES = 16;
+// Safety bound on samples per cone (apertures near 1 degree step one half voxel at a time):
+// 1024 half-voxel steps cross a 512^3 grid's diagonal.
+VCT_CONST int CONE_MAX_STEPS = 1024;
+
+// Texture units. The G-buffer occupies units 0-5 (render/gbuffer.h); scene textures 8.
+VCT_CONST int CONE_UNIT_OPACITY = 10;   // grid.opacity (AO, iso) or grid.radiance (GI, iso)
+VCT_CONST int CONE_UNIT_ANISO = 11;     // 11..16: grid.anisoRadiance[+X, -X, +Y, -Y, +Z, -Z]
+VCT_CONST int CONE_UNIT_COLOR = 17;     // rayMarchVoxels: albedo or radiance
+VCT_CONST int CONE_IMAGE_OUTPUT = 0;    // image unit of the output texture
+VCT_CONST int CONE_UBO_BINDING = 0;
+
+// AO mappings (ConeSettings::aoMapping).
+VCT_CONST int CONE_AO_LINEAR = 0;    // A = 1 - sum_c w_c alpha_c: estimates BRIEF section 1's A_R
+VCT_CONST int CONE_AO_FALLOFF = 1;   // each sample's occlusion weighted by 1 / (1 + lambda t)
+
+// rayMarchVoxels channels.
+VCT_CONST int CONE_CHANNEL_OPACITY = 0;
+VCT_CONST int CONE_CHANNEL_ALBEDO = 1;
+VCT_CONST int CONE_CHANNEL_RADIANCE = 2;
+
+// Defaults (ConeSettings; ranges in src/cone/cone_settings.h).
+// 6 cones: Villegas 2016's set, cheapest set that covers the hemisphere with 60 deg cones.
+VCT_CONST int CONE_DEFAULT_COUNT = 6;
+VCT_CONST float CONE_DEFAULT_APERTURE_6 = 60.0;   // degrees: the 6 cones tile the hemisphere
+VCT_CONST float CONE_DEFAULT_APERTURE_16 = 50.0;  // degrees: compix / WickedEngine's 16-cone set
+// beta = 0.5: two samples per footprint diameter, so a one-voxel wall is always sampled
+// within its trilinear support; 1.0 halves the cost and starts to skip thin walls.
+VCT_CONST float CONE_DEFAULT_STEP = 0.5;
+// 1.5 voxels: a conservatively voxelized surface marks voxels up to one voxel above the
+// shading point (centres up to 0.5 above); trilinear support is one texel, so a level-0
+// sample at 1.5 voxels gives those voxels weight exactly 0 (no self-occlusion).
+VCT_CONST float CONE_DEFAULT_OFFSET = 1.5;
+// 0.99: past it the remaining 1% changes the result by less than 16-bit precision matters.
+VCT_CONST float CONE_DEFAULT_MAX_ALPHA = 0.99;
+// Plane limit: a sample at height h above the shading point's tangent plane uses texels of
+// at most h / 1.5 voxels (the same 1.5-texel reach as the offset above), so coarse mips
+// never blend the surface's own voxels into its cones (flat floors stay open, AO = 1).
+VCT_CONST float CONE_PLANE_LIMIT_RATIO = 1.5;
+// Crassin 2011's AO falloff 1 / (1 + lambda t), with lambda = 4 / R: weight 0.2 at t = R.
+VCT_CONST float CONE_FALLOFF_LAMBDA_R = 4.0;
+
+struct ConeUniforms {
+    mat4 voxelFromWorld;   // world -> voxel units [0, resolution]
+    mat4 worldFromView;    // rayMarchVoxels: camera frame
+    vec4 gridResolution;   // xyz voxels per axis, w = mip levels
+    vec4 march;            // x = tan(aperture / 2), y = step factor beta, z = offset (voxels), w = max alpha
+    vec4 limits;           // x = max distance (voxels), y = sky radiance, z = falloff lambda (1/voxels),
+                           // w = plane-limit ratio (0 = off)
+    vec4 camera;           // x = tan(yfov / 2) * aspect, y = tan(yfov / 2), z = ray step (voxels), w unused
+    ivec4 config;          // x = cone count, y = AO mapping, z = mip level (rayMarch), w = channel (rayMarch)
+    ivec4 image;           // x = width, y = height
+    vec4 cones[CONE_MAX_CONES];  // xyz = direction in the tangent frame (z = normal), w = weight
+};
+
+// Weights of the three directional textures a cone of unit direction d blends: d^2 sums to
+// |d|^2 = 1, so a uniform medium keeps its opacity (abs(d) sums to up to sqrt(3) and
+// over-brightens; BRIEF section 3). Shared so the CPU test checks the shader's function.
+CONE_FN vec3 cone_anisoWeights(vec3 d) { return d * d; }
+
+VCT_END_NAMESPACE

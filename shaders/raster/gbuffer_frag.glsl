@@ -1,0 +1,40 @@
+// G-buffer fragment stage: the surface at each pixel centre (layout in src/render/gbuffer.h).
+#include "common/scene.glsl"
+in vec3 vWorldPos;
+in vec3 vNormal;
+in vec2 vUv;
+uniform vec3 eyeWorld;
+uniform mat4 viewFromWorld;
+layout(location = 0) out vec4 outPosition;
+layout(location = 1) out vec4 outNormal;
+layout(location = 2) out vec4 outGeomNormal;
+layout(location = 3) out vec4 outAlbedo;
+layout(location = 4) out vec4 outEmission;
+
+void main() {
+    uint tri = uint(gl_PrimitiveID);
+    uint material = sceneTriMaterial[tri];
+    vec4 base = scene_baseColor(material, vUv, -1.0);
+    GpuMaterial m = sceneMaterials[material];
+    if ((m.flags & MATERIAL_ALPHA_MASK) != 0 && base.a < m.alphaCutoff) discard;
+
+    // Geometric normal from the triangle itself (exact, unlike screen-space derivatives).
+    vec3 p0 = sceneVertices[sceneIndices[3u * tri + 0u]].position.xyz;
+    vec3 p1 = sceneVertices[sceneIndices[3u * tri + 1u]].position.xyz;
+    vec3 p2 = sceneVertices[sceneIndices[3u * tri + 2u]].position.xyz;
+    vec3 ng = cross(p1 - p0, p2 - p0);
+    ng = length(ng) > 0.0 ? normalize(ng) : vec3(0.0, 1.0, 0.0);
+    vec3 n = length(vNormal) > 0.0 ? normalize(vNormal) : ng;
+    // Every surface is seen from its front: flip both normals toward the eye. Visibility
+    // treats all triangles as two-sided, as the AO definition requires (BRIEF section 1).
+    vec3 toEye = eyeWorld - vWorldPos;
+    if (dot(ng, toEye) < 0.0) ng = -ng;
+    if (dot(n, ng) < 0.0) n = -n;
+
+    float viewDepth = -(viewFromWorld * vec4(vWorldPos, 1.0)).z;
+    outPosition = vec4(vWorldPos, max(viewDepth, 1e-30));
+    outNormal = vec4(n, 1.0);
+    outGeomNormal = vec4(ng, float(tri + 1u));
+    outAlbedo = vec4(base.rgb, 1.0);
+    outEmission = vec4(scene_emission(material, vUv, -1.0), 1.0);
+}

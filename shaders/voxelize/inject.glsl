@@ -1,0 +1,114 @@
+// Direct light into the voxels: L = emission + albedo / pi * sum_lights E, with E the
+// irradiance of each KHR_lights_punctual light on the voxel's average normal and its
+// visibility from a voxel walk (Amanatides-Woo) through the level-0 opacity. Radiance is a
+// per-area quantity, so nothing here scales with the voxel size: the result does not
+// change with the grid resolution. Output premultiplied: (L * opacity, opacity).
+#include "common/scene.glsl"
+#include "voxelize/voxelize_shared.h"
+
+layout(local_size_x = VOX_GRID_GROUP, local_size_y = VOX_GRID_GROUP, local_size_z = VOX_GRID_GROUP) in;
+
+layout(binding = 0) uniform sampler3D uOpacity;
+layout(binding = 1) uniform sampler3D uAlbedo;
+layout(binding = 2) uniform sampler3D uNormal;
+layout(binding = 3) uniform sampler3D uEmission;
+layout(RADIANCE_FORMAT, binding = 0) uniform writeonly image3D outRadiance;
+
+uniform ivec3 uResolution;
+uniform vec3 uGridOrigin;
+uniform float uVoxelSize;
+uniform int uLightCount;
+uniform float uShadowOffset;  // voxels along the normal before the shadow ray starts
+
+const float PI = 3.14159265358979;
+const float RADIANCE_MAX = RADIANCE_FORMAT_MAX;
+
+// Transmittance from `o` (voxel units) along unit `d` up to distance tMax, compositing the
+// opacity of every voxel the segment crosses; stops once it is ~opaque.
+float inject_visibility(vec3 o, vec3 d, float tMax) {
+    // Clip to the grid box: outside it there is nothing to block.
+    vec3 invD;
+    for (int a = 0; a < 3; ++a) invD[a] = d[a] != 0.0 ? 1.0 / d[a] : 1.0e30;
+    vec3 t0 = (vec3(0.0) - o) * invD, t1 = (vec3(uResolution) - o) * invD;
+    vec3 tNear = min(t0, t1), tFar = max(t0, t1);
+    float tEnter = max(0.0, max(tNear.x, max(tNear.y, tNear.z)));
+    float tExit = min(tMax, min(tFar.x, min(tFar.y, tFar.z)));
+    if (!(tEnter < tExit)) return 1.0;
+    vec3 p = o + d * tEnter;
+    ivec3 cell = clamp(ivec3(floor(p)), ivec3(0), uResolution - 1);
+    ivec3 stepDir = ivec3(sign(d));
+    vec3 tDelta = abs(invD);
+    vec3 tNext = vec3(tExit + 1.0);
+    for (int a = 0; a < 3; ++a)
+        if (d[a] != 0.0) tNext[a] = tEnter + ((float(cell[a]) + (d[a] > 0.0 ? 1.0 : 0.0)) - p[a]) * invD[a];
+    float transmittance = 1.0;
+    int maxSteps = uResolution.x + uResolution.y + uResolution.z + 3;
+    for (int i = 0; i < maxSteps; ++i) {
+        transmittance *= 1.0 - texelFetch(uOpacity, cell, 0).r;
+        if (transmittance < 0.01) return 0.0;
+        float tn = min(tNext.x, min(tNext.y, tNext.z));
+        if (tn >= tExit) break;
+        int a = tNext.x == tn ? 0 : (tNext.y == tn ? 1 : 2);
+        cell[a] += stepDir[a];
+        tNext[a] += tDelta[a];
+        if (cell[a] < 0 || cell[a] >= uResolution[a]) break;
+    }
+    return transmittance;
+}
+
+// Irradiance (W/m^2 per channel, here lux-like photometric units as given) from light i on
+// a surface at `pWorld` with unit normal n (zero: a voxel whose faces point both ways,
+// lit as if facing the light, at half weight since half its area faces away).
+vec3 inject_lightIrradiance(int i, vec3 pWorld, vec3 pVoxel, vec3 n) {
+    GpuLight light = sceneLights[i];
+    int type = int(light.color.w + 0.5);
+    vec3 toLight;
+    float distance;  // world
+    vec3 intensity = light.color.rgb;
+    if (type == LIGHT_DIRECTIONAL) {
+        toLight = -normalize(light.direction.xyz);
+        distance = 3.4e38;
+    } else {
+        vec3 dl = light.position.xyz - pWorld;
+        distance = length(dl);
+        if (distance <= 0.0) return vec3(0.0);
+        toLight = dl / distance;
+        // E = I cos / d^2, with the distance kept above half a voxel so a light inside a
+        // voxel does not blow up to Inf.
+        intensity /= max(distance * distance, 0.25 * uVoxelSize * uVoxelSize);
+        if (type == LIGHT_SPOT) {
+            // glTF KHR_lights_punctual smooth falloff between the outer and inner cones.
+            float cd = dot(normalize(light.direction.xyz), -toLight);
+            float scale = 1.0 / max(0.001, light.spot.y - light.spot.x);
+            float att = clamp((cd - light.spot.x) * scale, 0.0, 1.0);
+            intensity *= att * att;
+        }
+    }
+    bool twoSided = dot(n, n) < 0.5;
+    float cosine = twoSided ? 0.5 : dot(n, toLight);
+    if (cosine <= 0.0 || all(equal(intensity, vec3(0.0)))) return vec3(0.0);
+    vec3 start = pVoxel + (twoSided ? toLight : n) * uShadowOffset;
+    float tMax = distance / uVoxelSize - length(start - pVoxel);
+    if (tMax <= 0.0) return intensity * cosine;
+    return intensity * cosine * inject_visibility(start, toLight, tMax);
+}
+
+void main() {
+    ivec3 v = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(v, uResolution))) return;
+    float alpha = texelFetch(uOpacity, v, 0).r;
+    if (alpha <= 0.0) {
+        imageStore(outRadiance, v, vec4(0.0));
+        return;
+    }
+    vec3 albedo = texelFetch(uAlbedo, v, 0).rgb;
+    vec3 n = texelFetch(uNormal, v, 0).xyz;
+    vec3 L = texelFetch(uEmission, v, 0).rgb;
+    vec3 pVoxel = vec3(v) + 0.5;
+    vec3 pWorld = uGridOrigin + pVoxel * uVoxelSize;
+    vec3 E = vec3(0.0);
+    for (int i = 0; i < uLightCount; ++i) E += inject_lightIrradiance(i, pWorld, pVoxel, n);
+    L += albedo / PI * E;
+    L = min(L, vec3(RADIANCE_MAX));
+    imageStore(outRadiance, v, vec4(L * alpha, alpha));
+}

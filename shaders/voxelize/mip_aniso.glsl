@@ -1,0 +1,48 @@
+// One level of one directional (anisotropic) texture (Crassin 2011): for a cone travelling
+// along +axis (uSign = 1) or -axis (uSign = -1), the children of each line along the axis
+// are composited front to back (premultiplied: c = c_front + (1 - a_front) c_back), and the
+// lines across the axis are averaged.
+#include "voxelize/voxelize_shared.h"
+#include "voxelize/mip_common.glsl"
+
+layout(local_size_x = VOX_GRID_GROUP, local_size_y = VOX_GRID_GROUP, local_size_z = VOX_GRID_GROUP) in;
+
+layout(SRC_FORMAT, binding = 0) uniform readonly image3D src;  // radiance, opacity or aniso
+layout(DST_FORMAT, binding = 1) uniform writeonly image3D dst;
+
+uniform ivec3 uSrcSize;
+uniform ivec3 uDstSize;
+uniform int uAxis;  // 0, 1, 2
+uniform int uSign;  // +1 or -1: direction of travel
+
+vec4 mip_source(ivec3 p) {
+#ifdef SOURCE_OPACITY
+    return vec4(0.0, 0.0, 0.0, imageLoad(src, p).r);
+#else
+    return imageLoad(src, p);
+#endif
+}
+
+void main() {
+    ivec3 v = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(v, uDstSize))) return;
+    ivec3 lo, hi;
+    mip_childRange(v, uSrcSize, uDstSize, lo, hi);
+    int a = uAxis, b = (uAxis + 1) % 3, c = (uAxis + 2) % 3;
+    vec4 sum = vec4(0.0);
+    for (int j = lo[c]; j <= hi[c]; ++j)
+        for (int i = lo[b]; i <= hi[b]; ++i) {
+            vec4 acc = vec4(0.0);
+            int count = hi[a] - lo[a] + 1;
+            for (int k = 0; k < count; ++k) {
+                ivec3 p;
+                p[a] = uSign > 0 ? lo[a] + k : hi[a] - k;
+                p[b] = i;
+                p[c] = j;
+                acc += (1.0 - acc.a) * mip_source(p);
+            }
+            sum += acc;
+        }
+    float lines = float((hi[b] - lo[b] + 1) * (hi[c] - lo[c] + 1));
+    imageStore(dst, v, sum / lines);
+}

@@ -1,0 +1,41 @@
+// Constants shared by src/voxelize/*.cpp and shaders/voxelize/*.glsl: work-group sizes
+// (used by both `layout(local_size...)` and the dispatch math), image units, and the
+// fixed-point scales of the order-independent accumulation.
+#pragma once
+#include "common/shared_types.h"
+
+VCT_BEGIN_NAMESPACE
+
+// One invocation per triangle; triangles whose projection covers more than
+// VOX_SMALL_COLUMNS voxel columns are deferred to the "big" pass, where a whole work
+// group of VOX_BIG_GROUP invocations shares the columns of one triangle, so a floor
+// spanning the grid does not serialize one SIMD lane for seconds.
+VCT_CONST int VOX_TRI_GROUP = 64;
+VCT_CONST int VOX_BIG_GROUP = 64;
+VCT_CONST int VOX_SMALL_COLUMNS = 48;
+VCT_CONST int VOX_GRID_GROUP = 4;   // 4x4x4 for per-voxel passes (resolve, inject, mips)
+
+// Image units of the accumulators (r32ui) written by voxelize.glsl and read by resolve.glsl.
+VCT_CONST int VOX_UNIT_ALBEDO = 0;     // 3 images: r, g, b
+VCT_CONST int VOX_UNIT_NORMAL = 3;     // 3 images: x, y, z (two's complement sums)
+VCT_CONST int VOX_UNIT_WEIGHT = 6;     // 1 image: sum of weights
+VCT_CONST int VOX_UNIT_EMISSION = 7;   // 6 images: r lo, r hi, g lo, g hi, b lo, b hi
+
+// Storage binding of the big-triangle list: uvec4 header {groupsX, 1, 1, occupied voxel
+// count} (doubles as the indirect dispatch arguments), then triangle ids.
+VCT_CONST int VOX_BINDING_BIGLIST = 6;
+
+// Fixed point. Every (triangle, voxel) contribution has an integer weight in
+// [1, VOX_WEIGHT_MAX] ~ the triangle's area in voxel faces (so a sliver does not count
+// as much as a floor), and adds weight * round(value * scale):
+// - albedo in [0, 1] at 12 bits: a voxel overflows only past ~65k full-weight triangles;
+// - normal components in [-1, 1] at 12 bits, summed in two's complement;
+// - emission per channel in a 64-bit (hi, lo) pair with carry, 2^-12 absolute resolution,
+//   clamped to VOX_EMISSION_MAX: ~280k full-weight contributions before overflow.
+VCT_CONST int VOX_WEIGHT_MAX = 16;
+VCT_CONST float VOX_ALBEDO_SCALE = 4095.0;
+VCT_CONST float VOX_NORMAL_SCALE = 4095.0;
+VCT_CONST float VOX_EMISSION_SCALE = 4096.0;
+VCT_CONST float VOX_EMISSION_MAX = 1.0e9;
+
+VCT_END_NAMESPACE

@@ -1,0 +1,207 @@
+#include "app/render_options.h"
+
+#include "eval/image_io.h"
+#include "gl/context.h"
+#include "render/renderer.h"
+#include "scene/gltf_loader.h"
+#include "util/atomic_file.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
+namespace vct {
+
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> out;
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, ','))
+        if (!item.empty()) out.push_back(item);
+    return out;
+}
+
+void parseSize(const std::string& text, int& width, int& height) {
+    auto parseInt = [&](const std::string& s) {
+        size_t used = 0;
+        int v = 0;
+        try { v = std::stoi(s, &used); } catch (...) { used = 0; }
+        if (used != s.size() || s.empty() || v < 1 || v > 16384)
+            throw std::invalid_argument("--size '" + text + "': expected W or WxH with sides in [1, 16384]");
+        return v;
+    };
+    size_t x = text.find('x');
+    if (x == std::string::npos) { width = height = parseInt(text); return; }
+    width = parseInt(text.substr(0, x));
+    height = parseInt(text.substr(x + 1));
+}
+
+RenderRequest makeRenderRequest(const RenderOptions& o, const Scene& scene) {
+    RenderRequest r;
+    parseSize(o.size, r.width, r.height);
+    auto oneOf = [](const std::string& v, const std::vector<std::string>& set, const std::string& opt) {
+        if (std::find(set.begin(), set.end(), v) == set.end()) {
+            std::string all;
+            for (const auto& s : set) all += (all.empty() ? "" : ", ") + s;
+            throw std::invalid_argument(opt + " '" + v + "': expected one of " + all);
+        }
+    };
+    oneOf(o.ao, aoMethods(), "--ao");
+    oneOf(o.gi, giMethods(), "--gi");
+    oneOf(o.backend, {"gl", "vdb"}, "--backend");
+    r.ao = o.ao;
+    r.gi = o.gi;
+    if (!std::isfinite(o.radius) || o.radius <= 0.f) throw std::invalid_argument("--radius must be finite and > 0");
+    if (!std::isfinite(o.sky) || o.sky < 0.f) throw std::invalid_argument("--sky must be finite and >= 0");
+    if (o.spp < 1 || o.spp > (1 << 20)) throw std::invalid_argument("--spp must be in [1, 1048576]");
+    if (o.voxelRes < 4 || o.voxelRes > 1024) throw std::invalid_argument("--voxel-res must be in [4, 1024]");
+    r.radius = o.radius;
+    r.sky = o.sky;
+    r.spp = o.spp;
+    r.seed = o.seed;
+    r.voxelRes = o.voxelRes;
+    r.backend = o.backend;
+    r.prune = !o.noPrune;
+    if (!o.aovs.empty()) r.aovs = splitList(o.aovs);
+    for (const auto& a : r.aovs)
+        if (!findAov(a)) {
+            std::string all;
+            for (const auto& k : knownAovs()) all += (all.empty() ? "" : ", ") + std::string(k.name);
+            throw std::invalid_argument("--aov '" + a + "': unknown AOV (known: " + all + ")");
+        }
+    for (const auto& p : o.params) r.params.set(p);
+
+    CameraRequest cam;
+    cam.nameOrIndex = o.camera;
+    cam.fovDeg = o.fovDeg;
+    if (!o.eye.empty() || !o.target.empty()) {
+        if (o.eye.empty() || o.target.empty()) throw std::invalid_argument("--eye and --target go together");
+        cam.hasEye = true;
+        cam.eye = parseVec3(o.eye);
+        cam.target = parseVec3(o.target);
+    }
+    r.camera = resolveCamera(scene, cam, float(r.width) / float(r.height));
+    return r;
+}
+
+namespace {
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+    if (s.size() < suffix.size()) return false;
+    std::string tail = s.substr(s.size() - suffix.size());
+    std::transform(tail.begin(), tail.end(), tail.begin(), ::tolower);
+    return tail == suffix;
+}
+
+// How one AOV becomes 8-bit: radiance through exposure and sRGB; fractions (ao, opacity)
+// and albedo as stored; normals as 0.5 + 0.5 n; depth and position scaled to their range.
+Image displayable(const std::string& aov, const Image& img, float exposure) {
+    if (aov == "beauty" || aov == "direct" || aov == "indirect" || aov == "emission" || aov == "voxel_radiance")
+        return toneMapToSrgb(img, exposure);
+    Image out = img;
+    if (aov == "normal") {
+        for (float& v : out.pixels) v = 0.5f + 0.5f * v;
+    } else if (aov == "depth" || aov == "position" || aov == "ao_stderr" || aov == "indirect_stderr") {
+        float lo = 1e30f, hi = -1e30f;
+        for (float v : img.pixels) { lo = std::min(lo, v); hi = std::max(hi, v); }
+        float span = hi > lo ? hi - lo : 1.f;
+        for (float& v : out.pixels) v = (v - lo) / span;
+    } else if (aov == "albedo" || aov == "voxel_albedo") {
+        return toneMapToSrgb(img, 0.f);
+    }
+    for (float& v : out.pixels) v = std::clamp(v, 0.f, 1.f);
+    return out;
+}
+
+}  // namespace
+
+void writeRenderOutput(const std::string& path, const std::map<std::string, Image>& aovs,
+                       const std::vector<std::string>& order, float exposure) {
+    if (endsWith(path, ".exr")) {
+        const Image& first = aovs.at(order.front());
+        int channels = 0;
+        for (const auto& name : order) channels += aovs.at(name).channels;
+        Image all(first.width, first.height, channels);
+        std::vector<std::string> names;
+        int c0 = 0;
+        for (const auto& name : order) {
+            const Image& img = aovs.at(name);
+            static const char* rgb[3] = {"R", "G", "B"};
+            for (int c = 0; c < img.channels; ++c) {
+                if (img.channels == 1) names.push_back(name);
+                else names.push_back(name == "beauty" ? std::string(rgb[c]) : name + "." + rgb[c]);
+            }
+            for (size_t p = 0; p < size_t(img.width) * img.height; ++p)
+                for (int c = 0; c < img.channels; ++c) all.pixels[p * channels + c0 + c] = img.pixels[p * img.channels + c];
+            c0 += img.channels;
+        }
+        writeImage(path, all, names);
+    } else if (endsWith(path, ".png")) {
+        std::string which;
+        if (order.size() == 1) which = order.front();
+        else if (aovs.count("beauty")) which = "beauty";
+        else throw std::invalid_argument(path + ": a PNG holds one AOV; request one --aov or write .exr");
+        writeImage(path, displayable(which, aovs.at(which), exposure));
+    } else {
+        throw std::invalid_argument(path + ": output must end in .png or .exr");
+    }
+}
+
+int runRender(const RenderOptions& o) {
+    Scene scene = loadScene(o.scenePath);
+    for (const auto& w : scene.warnings) std::cerr << "vct: warning: " << o.scenePath << ": " << w << '\n';
+    RenderRequest request = makeRenderRequest(o, scene);
+    // Validate the output name before any work.
+    if (!endsWith(o.output, ".png") && !endsWith(o.output, ".exr"))
+        throw std::invalid_argument("-o " + o.output + ": output must end in .png or .exr");
+
+    GlContext::shared(parseGlDevice(o.glDevice));
+    RenderSession session(scene);
+    if (o.explain) std::cout << describePlan(planRender(session.features(), request)) << std::flush;
+    const Camera& c = request.camera;
+    std::cerr << "vct: " << o.scenePath << " (" << scene.triangles.size() << " triangles) " << request.width << "x"
+              << request.height << " ao=" << request.ao << " gi=" << request.gi << " R=" << request.radius
+              << " seed=" << request.seed << " eye=(" << c.eye.x << "," << c.eye.y << "," << c.eye.z << ") target=("
+              << c.target.x << "," << c.target.y << "," << c.target.z << ") fov=" << glm::degrees(c.yfov) << "\n";
+    RenderResult result = session.render(request);
+    auto unused = request.params.unusedKeys();
+    if (!unused.empty())
+        throw std::invalid_argument("--param " + unused.front() + ": unknown parameter for this render (see --help-params)");
+    for (const auto& [name, img] : result.aovs)
+        for (float v : img.pixels)
+            if (!std::isfinite(v)) throw std::runtime_error("AOV '" + name + "' has a non-finite value (bug)");
+
+    std::filesystem::path out(o.output);
+    if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
+    writeRenderOutput(o.output, result.aovs, request.aovs, o.exposure);
+    if (!o.statsPath.empty()) writeTextFileAtomic(o.statsPath, statsJson(result, request, scene).dump(2) + "\n");
+    std::cerr << "vct: wrote " << o.output << " in " << result.totalMs << " ms\n";
+    return 0;
+}
+
+int runInfo(const std::string& scenePath, const std::string& glDevice) {
+    Scene scene = loadScene(scenePath);
+    SceneFeatures f = analyzeScene(scene);
+    std::cout << "scene: " << scenePath << "\n"
+              << "triangles: " << f.triangles << "\nvertices: " << scene.positions.size()
+              << "\nmaterials: " << f.materials << "\ntextures: " << scene.textures.size()
+              << "\nlights: " << f.lights << "\nemissive: " << (f.hasEmission ? "yes" : "no")
+              << "\noff-screen occluders: " << (f.hasOffscreenOccluders ? "yes" : "no") << "\nbounds: ("
+              << scene.bounds.min.x << ", " << scene.bounds.min.y << ", " << scene.bounds.min.z << ") .. ("
+              << scene.bounds.max.x << ", " << scene.bounds.max.y << ", " << scene.bounds.max.z << ")\n"
+              << "cameras: " << describeCameras(scene) << "\n";
+    for (const auto& l : scene.lights)
+        std::cout << "light '" << l.name << "': " << (l.type == LightType::Directional ? "directional" :
+                                                      l.type == LightType::Point ? "point" : "spot")
+                  << "\n";
+    for (const auto& w : scene.warnings) std::cout << "warning: " << w << "\n";
+    GlContext& gl = GlContext::shared(parseGlDevice(glDevice));
+    std::cout << "gl_renderer: " << gl.info().renderer << "\ngl_version: " << gl.info().version
+              << "\ngl_platform: " << gl.info().platform << "\n";
+    return 0;
+}
+
+}  // namespace vct

@@ -1,0 +1,73 @@
+#include "raster/gbuffer_pass.h"
+
+#include "gl/program.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <stdexcept>
+
+namespace vct {
+
+void bindGBufferTextures(const GBuffer& g) {
+    glBindTextureUnit(kUnitPosition, g.position.id());
+    glBindTextureUnit(kUnitNormal, g.normal.id());
+    glBindTextureUnit(kUnitGeomNormal, g.geomNormal.id());
+    glBindTextureUnit(kUnitAlbedo, g.albedo.id());
+    glBindTextureUnit(kUnitEmission, g.emission.id());
+    glBindTextureUnit(kUnitDepth, g.depth.id());
+}
+
+GBuffer renderGBuffer(const GpuScene& scene, const View& view, PassTimer& timer) {
+    auto scope = timer.scope("gbuffer");
+    static GlProgram program = buildGraphicsProgram("raster/gbuffer_vert.glsl", "raster/gbuffer_frag.glsl");
+
+    GBuffer g;
+    g.width = view.width;
+    g.height = view.height;
+    g.position = createTexture2D(GL_RGBA32F, g.width, g.height);
+    g.normal = createTexture2D(GL_RGBA32F, g.width, g.height);
+    g.geomNormal = createTexture2D(GL_RGBA32F, g.width, g.height);
+    g.albedo = createTexture2D(GL_RGBA32F, g.width, g.height);
+    g.emission = createTexture2D(GL_RGBA32F, g.width, g.height);
+    g.depth = createTexture2D(GL_DEPTH_COMPONENT32F, g.width, g.height);
+    g.fbo = createFramebuffer();
+    GLuint fbo = g.fbo.id();
+    const GLuint colors[5] = {g.position.id(), g.normal.id(), g.geomNormal.id(), g.albedo.id(), g.emission.id()};
+    GLenum drawBuffers[5];
+    for (int i = 0; i < 5; ++i) {
+        glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0 + i, colors[i], 0);
+        drawBuffers[i] = GL_COLOR_ATTACHMENT0 + i;
+    }
+    glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, g.depth.id(), 0);
+    glNamedFramebufferDrawBuffers(fbo, 5, drawBuffers);
+    if (glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("gbuffer: framebuffer incomplete");
+
+    const float zero[4] = {0, 0, 0, 0};
+    for (int i = 0; i < 5; ++i) glClearNamedFramebufferfv(fbo, GL_COLOR, i, zero);
+    const float farDepth = 0.f;  // reversed-Z: 0 is infinitely far
+    glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &farDepth);
+
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glViewport(0, 0, g.width, g.height);
+    glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);
+    glDisable(GL_CULL_FACE);
+    glUseProgram(program.id());
+    glUniformMatrix4fv(glGetUniformLocation(program.id(), "clipFromWorld"), 1, GL_FALSE,
+                       glm::value_ptr(view.clipFromWorld));
+    glUniformMatrix4fv(glGetUniformLocation(program.id(), "viewFromWorld"), 1, GL_FALSE,
+                       glm::value_ptr(view.viewFromWorld));
+    glUniform3fv(glGetUniformLocation(program.id(), "eyeWorld"), 1, glm::value_ptr(view.camera.eye));
+    bindSceneBuffers(scene);
+    glBindVertexArray(scene.vao.id());
+    glDrawElements(GL_TRIANGLES, 3 * scene.triangleCount, GL_UNSIGNED_INT, nullptr);
+    glBindVertexArray(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDisable(GL_DEPTH_TEST);
+    glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+    return g;
+}
+
+}  // namespace vct

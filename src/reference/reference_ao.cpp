@@ -1,0 +1,263 @@
+#include "reference/reference_ao.h"
+
+#include "reference/camera_rays.h"
+#include "reference/progress.h"
+#include "reference/sampler.h"
+#include "reference/sampling_math.h"
+#include "render/params.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace vct {
+
+void ReferenceSettings::validate() const {
+    auto fail = [](const std::string& what) { throw std::invalid_argument("ReferenceSettings: " + what); };
+    if (!(radius > 0.f) || !std::isfinite(radius)) fail("radius must be finite and > 0, got " + std::to_string(radius));
+    if (spp < 1 || spp > (1 << 20)) fail("spp must be in [1, 2^20], got " + std::to_string(spp));
+    if (!(targetStderr >= 0.f) || !std::isfinite(targetStderr)) fail("targetStderr must be finite and >= 0");
+    if (minSpp < 1) fail("minSpp must be >= 1");
+    if (bounces < 1 || bounces > 1024) fail("bounces must be in [1, 1024], got " + std::to_string(bounces));
+    if (rouletteBounce < 1) fail("rouletteBounce must be >= 1");
+    if (!(sky >= 0.f) || !std::isfinite(sky)) fail("sky must be finite and >= 0");
+}
+
+ReferenceSettings referenceSettingsFromParams(const ParamMap& params, ReferenceSettings s) {
+    s.spp = params.getInt("reference.spp", s.spp, 1, 1 << 20, "reference samples per pixel (budget)");
+    s.seed = uint64_t(params.getInt("reference.seed", int(s.seed), 0, std::numeric_limits<int>::max(),
+                                    "reference sample scramble seed"));
+    s.targetStderr = params.getFloat("reference.target-stderr", s.targetStderr, 0.f, 1e30f,
+                                     "stop once the image-mean standard error is below this (0 = off)");
+    s.minSpp = params.getInt("reference.min-spp", s.minSpp, 1, 1 << 20, "no early stop before this many spp");
+    s.bounces = params.getInt("reference.bounces", s.bounces, 1, 1024, "GI: max diffuse reflections per path");
+    s.rouletteBounce = params.getInt("reference.roulette-bounce", s.rouletteBounce, 1, 1 << 20,
+                                     "GI: Russian roulette from this bounce on");
+    static const std::vector<std::string> modes = {"single", "stream", "packet8", "packet16"};
+    std::string mode = params.getChoice("reference.ray-mode", modes[size_t(s.rayMode)], modes,
+                                        "how occlusion rays are handed to Embree");
+    for (size_t i = 0; i < modes.size(); ++i)
+        if (mode == modes[i]) s.rayMode = RayMode(i);
+    return s;
+}
+
+namespace {
+
+Image toImage(const std::vector<float>& values, int width, int height) {
+    if (width <= 0 || height <= 0) throw std::logic_error("ReferenceAO: not an image (point mode result)");
+    Image img(width, height, 1);
+    img.pixels = values;
+    return img;
+}
+
+// Totals of the progressive passes: 8, 16, 32, ... then the budget.
+std::vector<int> passTotals(int spp) {
+    std::vector<int> totals;
+    for (int t = 8; t < spp; t *= 2) totals.push_back(t);
+    totals.push_back(spp);
+    return totals;
+}
+
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Per-point Bernoulli statistics -> per-point standard error and that of the mean.
+void finishStatistics(ReferenceAO& out, const std::vector<uint32_t>& open, const std::vector<uint32_t>& samples,
+                      const std::vector<uint8_t>& valid) {
+    double sumVar = 0.0;
+    size_t validCount = 0;
+    for (size_t i = 0; i < open.size(); ++i) {
+        if (!valid[i] || samples[i] == 0) {
+            out.ao[i] = 1.f;
+            out.standardError[i] = 0.f;
+            continue;
+        }
+        double n = samples[i];
+        double p = open[i] / n;
+        double se = n > 1 ? std::sqrt(p * (1.0 - p) / (n - 1.0)) : 0.5;
+        out.ao[i] = float(p);
+        out.standardError[i] = float(se);
+        sumVar += se * se;
+        ++validCount;
+    }
+    out.meanStderr = validCount ? std::sqrt(sumVar) / double(validCount) : 0.0;
+}
+
+struct PointSetup {
+    glm::vec3 origin;
+    glm::vec3 geomNormal;
+    Frame frame;
+};
+
+}  // namespace
+
+Image ReferenceAO::aoImage() const { return toImage(ao, width, height); }
+Image ReferenceAO::stderrImage() const { return toImage(standardError, width, height); }
+
+ReferenceAO referenceAO(const EmbreeScene& scene, const std::vector<SurfacePoint>& points,
+                        const ReferenceSettings& settings) {
+    settings.validate();
+    const size_t n = points.size();
+    std::vector<PointSetup> setup(n);
+    std::vector<uint8_t> valid(n, 0);
+    // G-buffer positions carry the rasterizer's interpolation error and we do not know their
+    // triangle: floor the offset scale at a small fraction of the scene's coordinate range.
+    const float errorFloor = scene.sceneMaxAbs() * 0x1p-8f;
+    for (size_t i = 0; i < n; ++i) {
+        const SurfacePoint& sp = points[i];
+        if (!sp.valid) continue;
+        if (!finite(sp.position) || !finite(sp.normal) || !finite(sp.geomNormal))
+            throw std::invalid_argument("referenceAO: surface point " + std::to_string(i) + " is not finite");
+        float ln = glm::length(sp.normal), lg = glm::length(sp.geomNormal);
+        if (!(ln > 0.f) || !(lg > 0.f))
+            throw std::invalid_argument("referenceAO: surface point " + std::to_string(i) + " has a zero normal");
+        glm::vec3 ns = sp.normal / ln, ng = sp.geomNormal / lg;
+        if (glm::dot(ns, ng) < 0.f) ng = -ng;
+        float scale = std::max(maxAbsComponent(sp.position), errorFloor);
+        setup[i] = {offsetRayOrigin(sp.position, ng, scale), ng, Frame::fromZ(ns)};
+        valid[i] = 1;
+    }
+
+    ReferenceAO out;
+    out.ao.assign(n, 1.f);
+    out.standardError.assign(n, 0.f);
+    std::vector<uint32_t> open(n, 0), samples(n, 0);
+    std::atomic<uint64_t> rays{0};
+    const float radius = settings.radius;
+    ProgressBar progress("reference AO", uint64_t(n) * uint64_t(settings.spp), settings.progress);
+    auto start = std::chrono::steady_clock::now();
+
+    int done = 0;
+    for (int total : passTotals(settings.spp)) {
+        progress.setTotal(uint64_t(n) * uint64_t(settings.spp), "spp " + std::to_string(total));
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 64), [&](const tbb::blocked_range<size_t>& r) {
+            OcclusionBatch batch(scene, settings.rayMode);
+            auto visit = [&](uint32_t owner, bool visible) { open[owner] += visible ? 1u : 0u; };
+            for (size_t i = r.begin(); i != r.end(); ++i) {
+                if (!valid[i]) continue;
+                const PointSetup& ps = setup[i];
+                uint64_t stream = streamSeed(settings.seed, i);
+                for (int k = done; k < total; ++k) {
+                    glm::vec3 w = ps.frame.toWorld(sampleCosineHemisphere(sobol2D(stream, 0, uint32_t(k))));
+                    if (glm::dot(w, ps.geomNormal) <= 0.f) continue;  // below the surface: occluded
+                    batch.add(ps.origin, w, radius, uint32_t(i), visit);
+                }
+                samples[i] = uint32_t(total);
+            }
+            batch.flush(visit);
+            rays.fetch_add(batch.raysTraced());
+            progress.advance(uint64_t(r.size()) * uint64_t(total - done));
+        });
+        done = total;
+        finishStatistics(out, open, samples, valid);
+        if (settings.targetStderr > 0.f && done >= settings.minSpp && out.meanStderr < settings.targetStderr) break;
+    }
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out.sppUsed = done;
+    out.raysTraced = rays.load();
+    out.raysPerSecond = out.seconds > 0 ? double(out.raysTraced) / out.seconds : 0.0;
+    return out;
+}
+
+ReferenceAO referenceAO(const Scene& scene, const std::vector<SurfacePoint>& points,
+                        const ReferenceSettings& settings) {
+    EmbreeScene embree(scene);
+    return referenceAO(embree, points, settings);
+}
+
+ReferenceAO referenceAOPixelArea(const EmbreeScene& scene, const View& view, const ReferenceSettings& settings) {
+    settings.validate();
+    if (view.width <= 0 || view.height <= 0) throw std::invalid_argument("referenceAOPixelArea: empty view");
+    const size_t n = size_t(view.width) * size_t(view.height);
+    ReferenceAO out;
+    out.width = view.width;
+    out.height = view.height;
+    out.ao.assign(n, 1.f);
+    out.standardError.assign(n, 0.f);
+    std::vector<uint32_t> open(n, 0), samples(n, 0);
+    std::vector<uint8_t> valid(n, 0);  // any sample hit a surface
+    std::atomic<uint64_t> rays{0}, primary{0};
+    const float radius = settings.radius;
+    const float inf = std::numeric_limits<float>::infinity();
+    ProgressBar progress("reference AO (pixel area)", uint64_t(n) * uint64_t(settings.spp), settings.progress);
+    auto start = std::chrono::steady_clock::now();
+
+    int done = 0;
+    for (int total : passTotals(settings.spp)) {
+        progress.setTotal(uint64_t(n) * uint64_t(settings.spp), "spp " + std::to_string(total));
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 64), [&](const tbb::blocked_range<size_t>& r) {
+            OcclusionBatch batch(scene, settings.rayMode);
+            auto visit = [&](uint32_t owner, bool visible) { open[owner] += visible ? 1u : 0u; };
+            uint64_t primaryCount = 0;
+            for (size_t i = r.begin(); i != r.end(); ++i) {
+                const int x = int(i % size_t(view.width)), y = int(i / size_t(view.width));
+                uint64_t stream = streamSeed(settings.seed, i);
+                for (int k = done; k < total; ++k) {
+                    glm::vec2 jitter = sobol2D(stream, 0, uint32_t(k));
+                    CameraRay cr = cameraRay(view, float(x) + jitter.x, float(y) + jitter.y);
+                    uint32_t tri;
+                    float u, v, t;
+                    ++primaryCount;
+                    if (!scene.intersect(cr.origin, cr.direction, cr.tnear, inf, &tri, &u, &v, &t)) {
+                        open[i] += 1;  // sky sample: A = 1
+                        continue;
+                    }
+                    valid[i] = 1;
+                    SurfaceHit h = scene.surfaceAt(tri, u, v, cr.direction);
+                    glm::vec3 w = Frame::fromZ(h.shadingNormal)
+                                      .toWorld(sampleCosineHemisphere(sobol2D(stream, 1, uint32_t(k))));
+                    if (glm::dot(w, h.geomNormal) <= 0.f) continue;
+                    batch.add(offsetRayOrigin(h.position, h.geomNormal, h.errorScale), w, radius, uint32_t(i),
+                              visit);
+                }
+                samples[i] = uint32_t(total);
+            }
+            batch.flush(visit);
+            rays.fetch_add(batch.raysTraced());
+            primary.fetch_add(primaryCount);
+            progress.advance(uint64_t(r.size()) * uint64_t(total - done));
+        });
+        done = total;
+        // Pixels where no sample hit are sky (A = 1 exactly); partly covered pixels keep their
+        // sky samples as 1s in the Bernoulli mean.
+        finishStatistics(out, open, samples, valid);
+        if (settings.targetStderr > 0.f && done >= settings.minSpp && out.meanStderr < settings.targetStderr) break;
+    }
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out.sppUsed = done;
+    out.raysTraced = rays.load();
+    out.primaryRays = primary.load();
+    out.raysPerSecond = out.seconds > 0 ? double(out.raysTraced + out.primaryRays) / out.seconds : 0.0;
+    return out;
+}
+
+ReferenceAO referenceAOPixelArea(const Scene& scene, const View& view, const ReferenceSettings& settings) {
+    EmbreeScene embree(scene);
+    return referenceAOPixelArea(embree, view, settings);
+}
+
+std::vector<SurfacePoint> surfacePointsAtPixelCentres(const EmbreeScene& scene, const View& view) {
+    const size_t n = size_t(std::max(0, view.width)) * size_t(std::max(0, view.height));
+    std::vector<SurfacePoint> points(n);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 256), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t i = r.begin(); i != r.end(); ++i) {
+            const int x = int(i % size_t(view.width)), y = int(i / size_t(view.width));
+            CameraRay cr = cameraRay(view, float(x) + 0.5f, float(y) + 0.5f);
+            uint32_t tri;
+            float u, v, t;
+            if (!scene.intersect(cr.origin, cr.direction, cr.tnear, std::numeric_limits<float>::infinity(), &tri,
+                                 &u, &v, &t))
+                continue;
+            SurfaceHit h = scene.surfaceAt(tri, u, v, cr.direction);
+            points[i] = {h.position, h.shadingNormal, h.geomNormal, true};
+        }
+    });
+    return points;
+}
+
+}  // namespace vct

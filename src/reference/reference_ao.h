@@ -1,0 +1,90 @@
+// Ray-traced ground truth for ambient occlusion (BRIEF section 1):
+//
+//   A_R(p) = (1/pi) * integral_hemisphere V_R(p, w) max(0, n.w) dw
+//
+// estimated with cosine-weighted directions about the shading normal n, so the estimate is
+// the fraction of unoccluded rays. V_R is binary visibility within distance R (ray tfar = R,
+// back faces occlude); directions below the geometric normal count as occluded.
+//
+// Samples: Owen-scrambled, index-shuffled Sobol (sampler.h), one stream per point/pixel
+// hashed from (seed, index): deterministic for a seed and independent of the thread count.
+// Progressive: passes to 8, 16, 32, ... spp (then `spp`), stopping early once the standard
+// error of the image mean drops below `targetStderr`.
+//
+// Standard errors are the i.i.d. (Bernoulli) formula sqrt(p (1 - p) / (n - 1)) per point.
+// Scrambled Sobol converges faster than i.i.d. sampling, so this over-states the true error
+// (tests/cpu/reference_ao_test.cpp measures the ratio): a conservative error bar.
+#pragma once
+
+#include "image/image.h"
+#include "reference/embree_scene.h"
+#include "render/view.h"
+#include "scene/scene.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace vct {
+
+class ParamMap;
+
+struct SurfacePoint {
+    glm::vec3 position{0.f};     // world space
+    glm::vec3 normal{0.f, 0.f, 1.f};      // shading normal, unit
+    glm::vec3 geomNormal{0.f, 0.f, 1.f};  // geometric normal, unit; flipped to the shading normal's side
+    bool valid = false;                   // false = sky: A = 1, standard error 0
+};
+
+struct ReferenceSettings {
+    float radius = 1.f;        // AO radius R, world units, (0, inf)
+    int spp = 64;              // samples per point / pixel (the budget), [1, 1<<20]
+    uint64_t seed = 0;         // sample scramble seed
+    float targetStderr = 0.f;  // stop early once the image-mean standard error < this; 0 = off
+    int minSpp = 16;           // no early stop before this many spp, [1, spp]
+    bool progress = true;      // progress bar on stderr (only when it is a terminal)
+    int bounces = 4;           // GI: max diffuse reflections per path (1 = direct light only), [1, 1024]
+    int rouletteBounce = 3;    // GI: Russian roulette (unbiased) from this bounce on, [1, inf)
+    float sky = 1.f;           // GI: uniform sky radiance, [0, inf)
+    RayMode rayMode = RayMode::Stream;  // how occlusion rays reach Embree (bench_reference)
+
+    void validate() const;  // throws std::invalid_argument naming the bad field
+};
+
+// Reads "reference.spp", "reference.seed", "reference.target-stderr", "reference.min-spp",
+// "reference.bounces", "reference.roulette-bounce", "reference.ray-mode" on top of `base`.
+// The AO radius and the sky radiance are shared by every method: the caller sets them.
+ReferenceSettings referenceSettingsFromParams(const ParamMap& params, ReferenceSettings base = {});
+
+struct ReferenceAO {
+    int width = 0, height = 0;           // image modes: pixel (x, y) is element y * width + x, top row first
+    std::vector<float> ao;               // per point / pixel, in [0, 1]
+    std::vector<float> standardError;    // per point / pixel
+    double meanStderr = 0.0;  // standard error of the mean A over valid points (pixels with any hit)
+    int sppUsed = 0;
+    uint64_t raysTraced = 0;  // occlusion rays given to Embree (below-horizon samples are not traced)
+    uint64_t primaryRays = 0; // pixel-area mode only
+    double seconds = 0.0;     // wall clock of the sampling loop (Embree BVH build excluded)
+    double raysPerSecond = 0.0;  // (raysTraced + primaryRays) / seconds
+
+    Image aoImage() const;      // 1 channel, width x height (image modes)
+    Image stderrImage() const;
+};
+
+// AO at given points (e.g. the G-buffer's pixel centres).
+ReferenceAO referenceAO(const EmbreeScene& scene, const std::vector<SurfacePoint>& points,
+                        const ReferenceSettings& settings);
+ReferenceAO referenceAO(const Scene& scene, const std::vector<SurfacePoint>& points,
+                        const ReferenceSettings& settings);
+
+// Pixel-area AO: jittered primary rays over each pixel, box filter (what Cycles' AO pass
+// computes); samples that miss every surface count A = 1 (sky).
+ReferenceAO referenceAOPixelArea(const EmbreeScene& scene, const View& view, const ReferenceSettings& settings);
+ReferenceAO referenceAOPixelArea(const Scene& scene, const View& view, const ReferenceSettings& settings);
+
+// The surfaces seen through the pixel centres, top row first (element y * width + x);
+// sky pixels are invalid. Normals face the camera.
+std::vector<SurfacePoint> surfacePointsAtPixelCentres(const EmbreeScene& scene, const View& view);
+
+}  // namespace vct

@@ -1,0 +1,31 @@
+// CPU texture lookups for the reference path tracer: bilinear filtering of the base level
+// with the texture's wrap modes (repeat / clamp-to-edge), texel centres at (i + 0.5) / size,
+// row 0 at v = 0 (glTF's uv origin is the top-left of the image). Colour channels of base
+// colour and emissive textures are sRGB-encoded (glTF 2.0 spec, section 3.9.2): texels are
+// decoded to linear first, then filtered, as GL does for SRGB8_ALPHA8 textures. Alpha is
+// linear.
+#pragma once
+
+#include "scene/scene.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+
+namespace vct {
+
+// IEC 61966-2-1 sRGB decode of an 8-bit value.
+float srgbToLinear(uint8_t encoded);
+
+// Bilinear lookup; rgb decoded from sRGB when `srgb`, alpha always linear in [0, 1].
+// An empty texture reads as (1, 1, 1, 1).
+glm::vec4 sampleTexture(const Texture& texture, glm::vec2 uv, bool srgb = true);
+
+// Lambertian albedo: baseColorFactor.rgb x base colour texture, clamped to [0, 1].
+glm::vec3 materialAlbedo(const Scene& scene, uint32_t material, glm::vec2 uv);
+// glTF coverage alpha: baseColorFactor.a x texture alpha.
+float materialAlpha(const Scene& scene, uint32_t material, glm::vec2 uv);
+// Emitted radiance: emissiveFactor (already x emissive_strength) x emissive texture.
+glm::vec3 materialEmission(const Scene& scene, uint32_t material, glm::vec2 uv);
+
+}  // namespace vct

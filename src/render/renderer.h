@@ -1,0 +1,56 @@
+// The renderer core: executes a RenderPlan over one scene. A RenderSession owns the
+// scene's GPU copy and caches what several renders of the same scene can share (the
+// G-buffer per camera and size, the shadow maps, the voxel grids per resolution), so a
+// comparison of many methods rasterizes once and voxelizes once. It knows nothing of the
+// command line or of files.
+#pragma once
+
+#include "image/image.h"
+#include "render/plan.h"
+#include "render/request.h"
+#include "render/timing.h"
+#include "scene/scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <map>
+#include <memory>
+#include <string>
+
+namespace vct {
+
+struct RenderResult {
+    RenderPlan plan;
+    std::map<std::string, Image> aovs;  // requested AOVs, linear float, top row first
+    std::vector<PassTiming> passes;     // passes that ran in this render (cached ones not repeated)
+    double totalMs = 0.0;               // wall clock of this render
+    nlohmann::json extra = nlohmann::json::object();  // method statistics (rays, voxel memory, ...)
+};
+
+class RenderSession {
+public:
+    explicit RenderSession(const Scene& scene);
+    ~RenderSession();
+    RenderSession(const RenderSession&) = delete;
+    RenderSession& operator=(const RenderSession&) = delete;
+
+    RenderResult render(const RenderRequest& request);
+    const Scene& scene() const { return mScene; }
+    const SceneFeatures& features() const { return mFeatures; }
+    // How many times each shared pass actually ran in this session (tests use it to check
+    // that a comparison voxelizes once).
+    const std::map<std::string, int>& passRunCounts() const { return mRunCounts; }
+
+private:
+    struct Impl;
+    const Scene& mScene;
+    SceneFeatures mFeatures;
+    std::map<std::string, int> mRunCounts;
+    std::unique_ptr<Impl> mImpl;
+};
+
+// JSON for --stats: passes, totals, sizes, renderer string, core count, scene counts,
+// passes_run and passes_skipped.
+nlohmann::json statsJson(const RenderResult& result, const RenderRequest& request, const Scene& scene);
+
+}  // namespace vct

@@ -1,0 +1,116 @@
+#include "voxelize/voxelize.h"
+
+#include "gl/program.h"
+#include "voxelize/voxel_gl.h"
+#include "voxelize/voxelize_shared.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace vct {
+
+void buildIsotropicMips(VoxelGrid& grid);  // mips.cpp
+
+namespace {
+
+constexpr float HALF_SAFE_MAX = 30000.f;
+constexpr float PI = 3.14159265358979f;
+
+// Whether injected radiance can leave the half-float range: emission stored as float, or a
+// light whose irradiance at one voxel's distance (directional: its lux) is that bright.
+bool radianceNeedsFloat(const VoxelGrid& grid, const Scene& scene) {
+    if (textureInternalFormat(grid.emission.id()) == GL_RGBA32F) return true;
+    for (const Light& l : scene.lights) {
+        float I = std::max(l.color.x, std::max(l.color.y, l.color.z));
+        float E = l.type == LightType::Directional ? I : I / (0.25f * grid.voxelSize * grid.voxelSize);
+        if (E / PI > HALF_SAFE_MAX) return true;
+    }
+    return false;
+}
+
+void dispatchGrid(const glm::ivec3& size) {
+    const int g = gpu::VOX_GRID_GROUP;
+    glDispatchCompute(groupCount(size.x, g), groupCount(size.y, g), groupCount(size.z, g));
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+}  // namespace
+
+void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scene, float sky,
+                    const ParamMap& params, PassTimer& timer) {
+    if (!grid.opacity || !grid.albedo || !grid.normal || !grid.emission)
+        throw std::invalid_argument("injectRadiance: the grid is not voxelized");
+    if (!std::isfinite(sky) || sky < 0.f) throw std::invalid_argument("injectRadiance: sky radiance must be finite and >= 0");
+    for (const Light& l : scene.lights)
+        if (!std::isfinite(l.color.x + l.color.y + l.color.z) ||
+            !std::isfinite(l.position.x + l.position.y + l.position.z) ||
+            !std::isfinite(l.direction.x + l.direction.y + l.direction.z))
+            throw std::invalid_argument("injectRadiance: light '" + l.name + "' has a non-finite value");
+    const int bounces = params.getInt("vct.bounces", 0, 0, 8, "extra diffuse bounces traced between voxels");
+    const float offset = params.getFloat("vct.inject.offset", 2.f, 0.f, 16.f,
+                                         "voxels along the normal where shadow rays of injection start");
+    const bool bounceSky = params.getBool("vct.bounce.sky", true, "bounce cones that escape see the sky radiance");
+    const std::string precision =
+        params.getChoice("vct.voxel.precision", "auto", {"auto", "half", "float"},
+                         "storage of emission/radiance: half (RGBA16F, clamps at 65504), float (RGBA32F), "
+                         "auto = float when emission or lights exceed the half range");
+    const bool useFloat = precision == "float" || (precision == "auto" && radianceNeedsFloat(grid, scene));
+    const GLenum format = useFloat ? GL_RGBA32F : GL_RGBA16F;
+    const ShaderDefines defines = {{"RADIANCE_FORMAT", glslImageFormat(format)},
+                                   {"RADIANCE_FORMAT_MAX", formatMaxLiteral(format)}};
+    GlProgram inject = buildComputeProgram("voxelize/inject.glsl", defines);
+    GlProgram bounce;
+    if (bounces > 0) bounce = buildComputeProgram("voxelize/bounce.glsl", defines);
+
+    auto scope = timer.scope("inject");
+    const glm::ivec3 res = grid.resolution;
+    grid.radiance = createTexture3D(format, res.x, res.y, res.z, grid.levels);
+
+    // Direct light and emission.
+    bindSceneBuffers(gpuScene);
+    glBindTextureUnit(0, grid.opacity.id());
+    glBindTextureUnit(1, grid.albedo.id());
+    glBindTextureUnit(2, grid.normal.id());
+    glBindTextureUnit(3, grid.emission.id());
+    bindImage3D(0, grid.radiance.id(), 0, GL_WRITE_ONLY, format);
+    const GLuint p = inject.id();
+    setUniform(p, "uResolution", res);
+    setUniform(p, "uGridOrigin", grid.origin);
+    setUniform(p, "uVoxelSize", grid.voxelSize);
+    setUniform(p, "uLightCount", gpuScene.lightCount);
+    setUniform(p, "uShadowOffset", offset);
+    glUseProgram(p);
+    dispatchGrid(res);
+
+    if (bounces > 0) {
+        // The direct term stays fixed; each bounce re-gathers from the previous total.
+        GlTexture direct = createTexture3D(format, res.x, res.y, res.z);
+        GlTexture next = createTexture3D(format, res.x, res.y, res.z);
+        glCopyImageSubData(grid.radiance.id(), GL_TEXTURE_3D, 0, 0, 0, 0, direct.id(), GL_TEXTURE_3D, 0, 0, 0, 0,
+                           res.x, res.y, res.z);
+        const GLuint b = bounce.id();
+        setUniform(b, "uResolution", res);
+        setUniform(b, "uSky", bounceSky ? sky : 0.f);
+        setUniform(b, "uMaxLevel", float(grid.levels - 1));
+        for (int i = 0; i < bounces; ++i) {
+            buildIsotropicMips(grid);
+            glBindTextureUnit(0, grid.radiance.id());
+            glBindTextureUnit(1, direct.id());
+            glBindTextureUnit(2, grid.albedo.id());
+            glBindTextureUnit(3, grid.normal.id());
+            bindImage3D(0, next.id(), 0, GL_WRITE_ONLY, format);
+            glUseProgram(b);
+            dispatchGrid(res);
+            glCopyImageSubData(next.id(), GL_TEXTURE_3D, 0, 0, 0, 0, grid.radiance.id(), GL_TEXTURE_3D, 0, 0, 0, 0,
+                               res.x, res.y, res.z);
+            glMemoryBarrier(GL_ALL_BARRIER_BITS);
+        }
+    }
+    for (GLuint u = 0; u < 4; ++u) glBindTextureUnit(u, 0);
+    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    glUseProgram(0);
+    grid.memoryBytes = voxelGridMemoryBytes(grid);
+}
+
+}  // namespace vct

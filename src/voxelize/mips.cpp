@@ -1,0 +1,107 @@
+#include "voxelize/voxelize.h"
+
+#include "gl/program.h"
+#include "voxelize/voxel_gl.h"
+#include "voxelize/voxelize_shared.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace vct {
+
+namespace {
+
+glm::ivec3 levelSize(const glm::ivec3& base, int level) { return glm::max(base >> level, glm::ivec3(1)); }
+
+void dispatchGrid(const glm::ivec3& size) {
+    const int g = gpu::VOX_GRID_GROUP;
+    glDispatchCompute(groupCount(size.x, g), groupCount(size.y, g), groupCount(size.z, g));
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+}  // namespace
+
+// Isotropic levels 1.. of opacity and radiance; also used between bounces by injection.
+void buildIsotropicMips(VoxelGrid& grid) {
+    const bool hasRadiance = bool(grid.radiance);
+    ShaderDefines defines;
+    GLenum radianceFormat = GL_RGBA16F;
+    if (hasRadiance) {
+        radianceFormat = textureInternalFormat(grid.radiance.id());
+        defines = {{"HAS_RADIANCE", "1"}, {"RADIANCE_FORMAT", glslImageFormat(radianceFormat)}};
+    }
+    GlProgram program = buildComputeProgram("voxelize/mip_iso.glsl", defines);
+    glUseProgram(program.id());
+    for (int level = 1; level < grid.levels; ++level) {
+        glm::ivec3 src = levelSize(grid.resolution, level - 1), dst = levelSize(grid.resolution, level);
+        setUniform(program.id(), "uSrcSize", src);
+        setUniform(program.id(), "uDstSize", dst);
+        bindImage3D(0, grid.opacity.id(), level - 1, GL_READ_ONLY, GL_R16F);
+        bindImage3D(1, grid.opacity.id(), level, GL_WRITE_ONLY, GL_R16F);
+        if (hasRadiance) {
+            bindImage3D(2, grid.radiance.id(), level - 1, GL_READ_ONLY, radianceFormat);
+            bindImage3D(3, grid.radiance.id(), level, GL_WRITE_ONLY, radianceFormat);
+        }
+        dispatchGrid(dst);
+    }
+    glUseProgram(0);
+}
+
+namespace {
+
+void buildAnisotropicMips(VoxelGrid& grid) {
+    const int anisoLevels = grid.levels - 1;
+    if (anisoLevels < 1) throw std::invalid_argument("voxel grid too small for anisotropic mips");
+    const bool hasRadiance = bool(grid.radiance);
+    const GLenum baseFormat = hasRadiance ? textureInternalFormat(grid.radiance.id()) : GL_R16F;
+    // RGBA16F per the contract, RGBA32F when the radiance itself needed float precision.
+    const GLenum anisoFormat = baseFormat == GL_RGBA32F ? GL_RGBA32F : GL_RGBA16F;
+    ShaderDefines firstDefines = {{"SRC_FORMAT", glslImageFormat(baseFormat)},
+                                  {"DST_FORMAT", glslImageFormat(anisoFormat)}};
+    if (!hasRadiance) firstDefines.push_back({"SOURCE_OPACITY", "1"});
+    ShaderDefines restDefines = {{"SRC_FORMAT", glslImageFormat(anisoFormat)},
+                                 {"DST_FORMAT", glslImageFormat(anisoFormat)}};
+    GlProgram first = buildComputeProgram("voxelize/mip_aniso.glsl", firstDefines);
+    GlProgram rest = buildComputeProgram("voxelize/mip_aniso.glsl", restDefines);
+
+    const glm::ivec3 base = levelSize(grid.resolution, 1);
+    for (int d = 0; d < 6; ++d)
+        grid.anisoRadiance[size_t(d)] = createTexture3D(anisoFormat, base.x, base.y, base.z, anisoLevels);
+    const GLuint baseTexture = hasRadiance ? grid.radiance.id() : grid.opacity.id();
+    for (int level = 0; level < anisoLevels; ++level) {
+        const GLuint p = level == 0 ? first.id() : rest.id();
+        glUseProgram(p);
+        // Pyramid level level + 1 from pyramid level `level`.
+        glm::ivec3 src = levelSize(grid.resolution, level), dst = levelSize(grid.resolution, level + 1);
+        setUniform(p, "uSrcSize", src);
+        setUniform(p, "uDstSize", dst);
+        for (int d = 0; d < 6; ++d) {
+            const GlTexture& out = grid.anisoRadiance[size_t(d)];
+            setUniform(p, "uAxis", d / 2);
+            setUniform(p, "uSign", d % 2 == 0 ? 1 : -1);
+            if (level == 0) bindImage3D(0, baseTexture, 0, GL_READ_ONLY, baseFormat);
+            else bindImage3D(0, out.id(), level - 1, GL_READ_ONLY, anisoFormat);
+            bindImage3D(1, out.id(), level, GL_WRITE_ONLY, anisoFormat);
+            dispatchGrid(dst);
+        }
+    }
+    grid.anisotropic = true;
+    glUseProgram(0);
+}
+
+}  // namespace
+
+void buildMips(VoxelGrid& grid, bool anisotropic, PassTimer& timer) {
+    if (!grid.opacity) throw std::invalid_argument("buildMips: the grid has no opacity (voxelize first)");
+    auto scope = timer.scope("mips");
+    buildIsotropicMips(grid);
+    if (anisotropic) buildAnisotropicMips(grid);
+    else {
+        for (GlTexture& t : grid.anisoRadiance) t.reset();
+        grid.anisotropic = false;
+    }
+    for (GLuint u = 0; u < 4; ++u) glBindImageTexture(u, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    grid.memoryBytes = voxelGridMemoryBytes(grid);
+}
+
+}  // namespace vct

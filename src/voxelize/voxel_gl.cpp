@@ -1,0 +1,79 @@
+#include "voxelize/voxel_gl.h"
+
+#include "voxelize/voxelize.h"
+
+#include <stdexcept>
+
+namespace vct {
+
+void setUniform(GLuint program, const char* name, int v) {
+    glProgramUniform1i(program, glGetUniformLocation(program, name), v);
+}
+void setUniform(GLuint program, const char* name, float v) {
+    glProgramUniform1f(program, glGetUniformLocation(program, name), v);
+}
+void setUniform(GLuint program, const char* name, const glm::ivec3& v) {
+    glProgramUniform3i(program, glGetUniformLocation(program, name), v.x, v.y, v.z);
+}
+void setUniform(GLuint program, const char* name, const glm::vec3& v) {
+    glProgramUniform3f(program, glGetUniformLocation(program, name), v.x, v.y, v.z);
+}
+
+GLenum textureInternalFormat(GLuint texture) {
+    GLint f = 0;
+    glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_INTERNAL_FORMAT, &f);
+    return static_cast<GLenum>(f);
+}
+
+std::string glslImageFormat(GLenum internalFormat) {
+    switch (internalFormat) {
+    case GL_R16F: return "r16f";
+    case GL_R32F: return "r32f";
+    case GL_RGBA16F: return "rgba16f";
+    case GL_RGBA32F: return "rgba32f";
+    case GL_R32UI: return "r32ui";
+    default: throw std::invalid_argument("voxel grid: unsupported texture format " + std::to_string(internalFormat));
+    }
+}
+
+std::string formatMaxLiteral(GLenum internalFormat) {
+    return (internalFormat == GL_R16F || internalFormat == GL_RGBA16F) ? "65504.0" : "3.0e38";
+}
+
+namespace {
+
+size_t bytesPerTexel(GLenum f) {
+    switch (f) {
+    case GL_R16F: return 2;
+    case GL_R32F: case GL_R32UI: return 4;
+    case GL_RGBA16F: return 8;
+    case GL_RGBA32F: return 16;
+    default: return 0;
+    }
+}
+
+size_t textureBytes(const GlTexture& t) {
+    if (!t) return 0;
+    GLint levels = 0;
+    glGetTextureParameteriv(t.id(), GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
+    size_t texel = bytesPerTexel(textureInternalFormat(t.id())), total = 0;
+    for (int l = 0; l < std::max(1, levels); ++l) {
+        GLint w = 0, h = 0, d = 0;
+        glGetTextureLevelParameteriv(t.id(), l, GL_TEXTURE_WIDTH, &w);
+        glGetTextureLevelParameteriv(t.id(), l, GL_TEXTURE_HEIGHT, &h);
+        glGetTextureLevelParameteriv(t.id(), l, GL_TEXTURE_DEPTH, &d);
+        total += size_t(w) * size_t(h) * size_t(d) * texel;
+    }
+    return total;
+}
+
+}  // namespace
+
+size_t voxelGridMemoryBytes(const VoxelGrid& g) {
+    size_t total = textureBytes(g.opacity) + textureBytes(g.albedo) + textureBytes(g.normal) +
+                   textureBytes(g.emission) + textureBytes(g.radiance);
+    for (const GlTexture& t : g.anisoRadiance) total += textureBytes(t);
+    return total;
+}
+
+}  // namespace vct

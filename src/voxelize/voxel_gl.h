@@ -1,0 +1,29 @@
+// Small GL helpers shared by the voxelization, injection and mip passes (internal).
+#pragma once
+
+#include "gl/handles.h"
+
+#include <glm/glm.hpp>
+
+#include <string>
+
+namespace vct {
+
+// Binds `level` of a 3D texture (all layers) to an image unit.
+inline void bindImage3D(GLuint unit, GLuint texture, int level, GLenum access, GLenum format) {
+    glBindImageTexture(unit, texture, level, GL_TRUE, 0, access, format);
+}
+
+void setUniform(GLuint program, const char* name, int v);
+void setUniform(GLuint program, const char* name, float v);
+void setUniform(GLuint program, const char* name, const glm::ivec3& v);
+void setUniform(GLuint program, const char* name, const glm::vec3& v);
+
+// Internal format of level 0 of a texture.
+GLenum textureInternalFormat(GLuint texture);
+// The GLSL image format qualifier of an internal format ("rgba16f", ...).
+std::string glslImageFormat(GLenum internalFormat);
+// Largest finite value storable in the format ("65504.0" for half floats).
+std::string formatMaxLiteral(GLenum internalFormat);
+
+}  // namespace vct

@@ -1,0 +1,50 @@
+// Building the VoxelGrid of voxel_grid.h on the GPU: conservative voxelization of the scene's
+// triangles, direct-light (+ optional multi-bounce) radiance injection, and mip pyramids.
+//
+// Typical use (GI):   grid = voxelizeScene(...); injectRadiance(grid, ...); buildMips(grid, aniso, ...)
+// AO only:            grid = voxelizeScene(...); buildMips(grid, aniso, ...)
+//   (grid.radiance stays empty - id 0 - and buildMips builds opacity mips only; anisotropic
+//   textures then carry rgb = 0 and the directional opacity in alpha.)
+//
+// Parameters (ParamMap keys):
+//   vct.voxel.precision  auto|half|float  storage of emission/radiance/aniso textures;
+//                        "half" is RGBA16F (contract default; values clamp at 65504),
+//                        "float" RGBA32F; "auto" picks float when the scene's emission or
+//                        lights could exceed the half range (e.g. emission 1e6). Default auto.
+//   vct.bounces          0..8, default 0: extra diffuse bounces traced voxel to voxel.
+//   vct.inject.offset    0..16 voxels, default 2: shadow rays start this far along the normal.
+//   vct.bounce.sky       0|1, default 1: bounce cones that escape see the sky radiance `sky`.
+#pragma once
+
+#include "render/gpu_scene.h"
+#include "render/params.h"
+#include "render/timing.h"
+#include "voxelize/voxel_grid.h"
+
+namespace vct {
+
+// Conservative voxelization of every triangle overlapping `region` (Akenine-Moller SAT per
+// candidate voxel; no holes for thin, sub-voxel or axis-aligned triangles). Averages are
+// order independent (integer atomics), so the same input gives the same grid bit for bit.
+// Fills opacity (level 0; 1 where any triangle overlaps), albedo, normal, emission,
+// occupiedVoxels and memoryBytes. Timer scope "voxelize".
+VoxelGrid voxelizeScene(const GpuScene& scene, const Bounds3& region, int voxelRes,
+                        const ParamMap& params, PassTimer& timer);
+
+// Writes grid.radiance level 0: premultiplied (L * opacity, opacity), where L = emission +
+// albedo / pi * sum of the punctual lights' irradiance on the voxel's average normal, each
+// with visibility from a ray marched through the opacity grid (glTF KHR_lights_punctual
+// units). With vct.bounces = N, adds N diffuse bounces (6 cones of 60 degrees per voxel;
+// escaped cones see radiance `sky`). Call buildMips afterwards. Timer scope "inject".
+void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scene, float sky,
+                    const ParamMap& params, PassTimer& timer);
+
+// Isotropic mips of opacity and (if injected) radiance: the mean of the 2x2x2 children (3
+// along an axis whose size is odd, at its last voxel, so no geometry is dropped). With
+// `anisotropic`, also the six directional textures of the contract. Timer scope "mips".
+void buildMips(VoxelGrid& grid, bool anisotropic, PassTimer& timer);
+
+// GPU bytes of every texture held by the grid (queried from GL).
+size_t voxelGridMemoryBytes(const VoxelGrid& grid);
+
+}  // namespace vct
