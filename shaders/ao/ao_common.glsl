@@ -36,6 +36,22 @@ vec3 ao_fetchViewNormal(ivec2 g, vec3 p) {
     return len > 1e-20 && !isnan(len) && !isinf(len) ? n / len : normalize(-p);
 }
 
+vec3 ao_viewRayThroughPixel(vec2 c);
+
+// The surface seen at continuous pixel coordinate c: the nearest pixel's point, slid along
+// that pixel's tangent plane to the eye ray through c. Exact on planes, so marching methods
+// need no bias against the up-to-half-pixel snapping error; falls back to the pixel centre
+// where the plane is grazing (a depth change over 10 %).
+bool ao_fetchSurfaceAt(vec2 c, out vec3 s) {
+    ivec2 q = ivec2(floor(c));
+    if (!ao_fetchViewPosition(q, s)) return false;
+    vec3 n = ao_fetchViewNormal(q, s);
+    vec3 ray = ao_viewRayThroughPixel(c);
+    float depth = dot(n, s) / dot(n, ray);  // ray.z = -1, so this is the linear depth
+    if (depth > 0.0 && abs(depth + s.z) < 0.1 * (-s.z)) s = ray * depth;
+    return true;
+}
+
 vec2 ao_pixelFromView(vec3 p) { return aoView.pixelFromView.xy * p.xy / (-p.z) + aoView.pixelFromView.zw; }
 
 // Direction (not normalized, z = -1) of the eye ray through continuous pixel coordinate c.
@@ -58,5 +74,6 @@ vec2 ao_pixelNoise(ivec2 g, uint salt) {
     return vec2(h.xy >> 8u) * (1.0 / 16777216.0);  // 24-bit uniforms in [0, 1)
 }
 
-// Every pass writes through here: AO in [0, 1], never NaN.
-float ao_sanitize(float a) { return isnan(a) || isinf(a) ? 1.0 : clamp(a, 0.0, 1.0); }
+// Every pass writes through here: AO in [0, maxValue] (1 for a chain's last pass), never NaN.
+float ao_sanitize(float a, float maxValue) { return isnan(a) || isinf(a) ? 1.0 : clamp(a, 0.0, maxValue); }
+float ao_sanitize(float a) { return ao_sanitize(a, 1.0); }

@@ -23,6 +23,11 @@ VCT_CONST int AO_UNIT_ALBEDO = 3;
 VCT_CONST int AO_UNIT_INPUT = 6;
 VCT_CONST int AO_IMAGE_OUTPUT = 0;
 
+// Values above 1 may travel between passes (gtao's final power lifts visibility above 1 in
+// some slices, and XeGTAO keeps up to 1.5 through its denoiser so that the average of a
+// noisy pixel stays unbiased); the last pass of every chain clamps to [0, 1].
+VCT_CONST float AO_WORKING_MAX = 1.5;
+
 struct AoViewUniforms {
     mat4 viewFromWorld;
     // Full-resolution pinhole projection in pixels: pixel = xy * view.xy / (-view.z) + zw.

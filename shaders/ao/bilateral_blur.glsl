@@ -40,5 +40,5 @@ float blur_evaluate(ivec2 e) {
 void main() {
     ivec2 e = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(e, ao_evalSize()))) return;
-    imageStore(aoOut, e, vec4(ao_sanitize(blur_evaluate(e))));
+    imageStore(aoOut, e, vec4(ao_sanitize(blur_evaluate(e), blur.terms.z)));
 }

@@ -20,7 +20,9 @@ VCT_CONST int BLUR_BOX_SIZE = 4;                   // LearnOpenGL: offsets -2..1
 struct BlurUniforms {
     // x = radius in taps, y = axis (0 = x, 1 = y), z = is half-resolution (1) / not (0), w unused
     ivec4 config;
-    vec4 terms;        // x = depth sigma (fraction of depth), y = normal power, zw unused
+    // x = depth sigma (fraction of depth), y = normal power, z = output clamp (1 for a chain's
+    // last pass, else AO_WORKING_MAX), w unused
+    vec4 terms;
     vec4 weights[5];   // w_0 .. w_16 of the normalized 1D Gaussian: w_0 + 2 sum_{i>0} w_i = 1
 };
 

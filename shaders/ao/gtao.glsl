@@ -80,7 +80,7 @@ float gtao_evaluate(ivec2 g) {
         h1 = angleN + clamp(h1 - angleN, -AO_HALF_PI, AO_HALF_PI);
         visibility += projectedLength * (gtao_arc(h0, angleN, cosN) + gtao_arc(h1, angleN, cosN));
     }
-    visibility = pow(clamp(visibility / float(slices), 0.0, 1.0), gtao.shaping.y);
+    visibility = pow(max(visibility / float(slices), 0.0), gtao.shaping.y);
     if (gtao.config.z != 0) {
         vec3 albedo = texelFetch(aoGAlbedo, g, 0).rgb;
         visibility = gtao_multiBounce(visibility, dot(albedo, vec3(0.2126, 0.7152, 0.0722)));
@@ -91,5 +91,5 @@ float gtao_evaluate(ivec2 g) {
 void main() {
     ivec2 e = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(e, ao_evalSize()))) return;
-    imageStore(aoOut, e, vec4(ao_sanitize(gtao_evaluate(ao_gbufferPixel(e)))));
+    imageStore(aoOut, e, vec4(ao_sanitize(gtao_evaluate(ao_gbufferPixel(e)), gtao.shaping.z)));
 }

@@ -30,7 +30,9 @@ struct GtaoUniforms {
     ivec4 config;  // x = slices, y = steps per side, z = multi-bounce on (1) / off (0), w unused
     // x = effect radius (R x multiplier), y = falloff multiplier, z = falloff add, w = sample power
     vec4 falloff;
-    vec4 shaping;  // x = thin-occluder compensation, y = final power, zw unused
+    // x = thin-occluder compensation, y = final power, z = output clamp (1, or AO_WORKING_MAX
+    // when a filter follows), w unused
+    vec4 shaping;
 };
 
 VCT_END_NAMESPACE

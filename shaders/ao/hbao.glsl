@@ -2,6 +2,8 @@
 // (sin h_i - sin h_{i-1}) W(r_i), W = 1 - r^2/R^2, starting from the tangent angle t plus
 // the angle bias (Bavoil and Sainz 2008's incremental form). Angles are elevations above the
 // view plane. A = 1 - mean over directions. Directions rotated and steps jittered per pixel.
+// Samples are read at their exact marching coordinate (ao_fetchSurfaceAt), as gl_ssao
+// reconstructs positions at the sample's own UV.
 #include "ao/ao_common.glsl"
 #include "ao/hbao_shared.h"
 
@@ -40,10 +42,11 @@ float hbao_evaluate(ivec2 g) {
         float tangent = asin(clamp(hbao_sinTangent(p, n, center, dir), -1.0, 1.0));
         float sinHorizon = sin(min(tangent + hbao.angles.x, AO_HALF_PI));
         for (int j = 0; j < steps; ++j) {
-            ivec2 q = ivec2(floor(center + dir * ((float(j) + noise.y) * stepPx + 1.0)));
+            vec2 c = center + dir * ((float(j) + noise.y) * stepPx + 1.0);
+            ivec2 q = ivec2(floor(c));
             if (!ao_onScreen(q)) break;
             vec3 s;
-            if (q == g || !ao_fetchViewPosition(q, s)) continue;
+            if (q == g || !ao_fetchSurfaceAt(c, s)) continue;
             vec3 v = s - p;
             float r2 = dot(v, v);
             if (r2 > R2) continue;

@@ -1,19 +1,19 @@
 // Inspection view of the voxel grid: a ray from the camera through each pixel centre,
 // compositing one channel front to back at a fixed mip level. rgb = composited colour,
-// a = accumulated opacity. Defines: CONE_CHANNEL (CONE_CHANNEL_*).
+// a = accumulated opacity. Defines: CONE_VIEW_RADIANCE or CONE_VIEW_ALBEDO (else opacity).
 #include "cone/cone_shared.h"
 
 layout(local_size_x = CONE_LOCAL_SIZE, local_size_y = CONE_LOCAL_SIZE) in;
 layout(rgba32f, binding = CONE_IMAGE_OUTPUT) uniform writeonly image2D cone_viewOut;
 layout(std140, binding = CONE_UBO_BINDING) uniform ConeBlock { ConeUniforms u; };
 layout(binding = CONE_UNIT_OPACITY) uniform sampler3D cone_opacity;  // opacity, or radiance
-layout(binding = CONE_UNIT_COLOR) uniform sampler3D cone_color;      // albedo (CONE_CHANNEL_ALBEDO)
+layout(binding = CONE_UNIT_COLOR) uniform sampler3D cone_color;      // albedo (CONE_VIEW_ALBEDO)
 
 // (premultiplied colour, alpha) at texture coordinate tc.
 vec4 cone_viewSample(vec3 tc, float lod) {
-#if CONE_CHANNEL == CONE_CHANNEL_RADIANCE
+#if defined(CONE_VIEW_RADIANCE)
     return textureLod(cone_opacity, tc, lod);
-#elif CONE_CHANNEL == CONE_CHANNEL_ALBEDO
+#elif defined(CONE_VIEW_ALBEDO)
     float a = textureLod(cone_opacity, tc, lod).r;
     vec4 albedo = textureLod(cone_color, tc, 0.0);
     // Trilinear filtering blends in empty voxels (rgb 0, a 0): divide by the blended

@@ -12,7 +12,7 @@ VCT_BEGIN_NAMESPACE
 // spanning the grid does not serialize one SIMD lane for seconds.
 VCT_CONST int VOX_TRI_GROUP = 64;
 VCT_CONST int VOX_BIG_GROUP = 64;
-VCT_CONST int VOX_SMALL_COLUMNS = 48;
+VCT_CONST int VOX_SMALL_COLUMNS = 480000;
 VCT_CONST int VOX_GRID_GROUP = 4;   // 4x4x4 for per-voxel passes (resolve, inject, mips)
 
 // Image units of the accumulators (r32ui) written by voxelize.glsl and read by resolve.glsl.

@@ -41,11 +41,11 @@ std::vector<float> bilateralGaussianWeights(int radius, float sigma) {
     return out;
 }
 
-GlTexture runBilateralBlur(const AoPassContext& ctx, const GlTexture& ao, const AoBlurSettings& settings) {
+GlTexture runBilateralBlur(const AoPassContext& ctx, const GlTexture& ao, const AoBlurSettings& settings,
+                           bool lastPass) {
     gpu::BlurUniforms u{};
     std::vector<float> weights = bilateralGaussianWeights(settings.radius, settings.sigma);
     for (size_t i = 0; i < weights.size(); ++i) u.weights[i / 4][int(i % 4)] = weights[i];
-    u.terms = glm::vec4(settings.depthSigma, settings.normalPower, 0.f, 0.f);
     GLuint program = aoProgram("ao/bilateral_blur.glsl");
     bindAoPassInputs(ctx);
 
@@ -53,6 +53,8 @@ GlTexture runBilateralBlur(const AoPassContext& ctx, const GlTexture& ao, const 
     const GlTexture* input = &ao;
     for (int axis = 0; axis < 2; ++axis) {
         u.config = glm::ivec4(settings.radius, axis, ctx.scale > 1 ? 1 : 0, 0);
+        float outputMax = axis == 1 && lastPass ? 1.f : gpu::AO_WORKING_MAX;
+        u.terms = glm::vec4(settings.depthSigma, settings.normalPower, outputMax, 0.f);
         GlBuffer block = uploadUniformBlock(u, gpu::AO_BINDING_TECHNIQUE);
         glBindTextureUnit(gpu::AO_UNIT_INPUT, input->id());
         GlTexture out = createAoTexture(ctx.evalWidth, ctx.evalHeight);
@@ -76,7 +78,7 @@ GlTexture runBoxBlur(const AoPassContext& ctx, const GlTexture& ao) {
 GlTexture runDepthAwareUpsample(const AoPassContext& ctx, const GlTexture& ao, const AoBlurSettings& settings) {
     gpu::BlurUniforms u{};
     u.config = glm::ivec4(0, 0, 1, 0);
-    u.terms = glm::vec4(settings.depthSigma, settings.normalPower, 0.f, 0.f);
+    u.terms = glm::vec4(settings.depthSigma, settings.normalPower, 1.f, 0.f);
     GlBuffer block = uploadUniformBlock(u, gpu::AO_BINDING_TECHNIQUE);
     bindAoPassInputs(ctx);
     glBindTextureUnit(gpu::AO_UNIT_INPUT, ao.id());

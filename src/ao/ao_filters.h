@@ -30,8 +30,10 @@ AoBlurSettings readAoBlurSettings(const ParamMap& params, bool boxAllowed);
 // symmetric kernel sums to 1: w_0 + 2 sum_{i>0} w_i = 1. radius 0 gives {1}.
 std::vector<float> bilateralGaussianWeights(int radius, float sigma);
 
-// Separable bilateral blur (x then y) of an evaluation-resolution AO texture.
-GlTexture runBilateralBlur(const AoPassContext& ctx, const GlTexture& ao, const AoBlurSettings& settings);
+// Separable bilateral blur (x then y) of an evaluation-resolution AO texture. `lastPass`:
+// clamp the result to [0, 1] (else to AO_WORKING_MAX, for the upsample that follows).
+GlTexture runBilateralBlur(const AoPassContext& ctx, const GlTexture& ao, const AoBlurSettings& settings,
+                           bool lastPass = true);
 GlTexture runBoxBlur(const AoPassContext& ctx, const GlTexture& ao);
 // Half-resolution AO (ctx.scale 2) to the G-buffer's resolution; uses the blur's depth and
 // normal terms.

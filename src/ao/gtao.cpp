@@ -36,7 +36,7 @@ GtaoSettings readGtaoSettings(const ParamMap& params) {
     return s;
 }
 
-GlTexture runGtao(const AoPassContext& ctx, const GtaoSettings& settings) {
+GlTexture runGtao(const AoPassContext& ctx, const GtaoSettings& settings, bool filtered) {
     float effectRadius = ctx.radius * settings.radiusMultiplier;
     float falloffRange = settings.falloffRange * effectRadius;
     float falloffFrom = effectRadius * (1.f - settings.falloffRange);
@@ -44,7 +44,7 @@ GlTexture runGtao(const AoPassContext& ctx, const GtaoSettings& settings) {
     u.config = glm::ivec4(settings.slices, settings.steps, settings.multiBounce ? 1 : 0, 0);
     // weight = saturate(dist * mul + add): 1 up to falloffFrom, 0 from effectRadius on.
     u.falloff = glm::vec4(effectRadius, -1.f / falloffRange, falloffFrom / falloffRange + 1.f, settings.samplePower);
-    u.shaping = glm::vec4(settings.thinOccluder, settings.finalPower, 0.f, 0.f);
+    u.shaping = glm::vec4(settings.thinOccluder, settings.finalPower, filtered ? gpu::AO_WORKING_MAX : 1.f, 0.f);
     GlBuffer block = uploadUniformBlock(u, gpu::AO_BINDING_TECHNIQUE);
     bindAoPassInputs(ctx);
     GlTexture out = createAoTexture(ctx.evalWidth, ctx.evalHeight);

@@ -24,6 +24,8 @@ struct GtaoSettings {
 // Slices and steps per side of an XeGTAO preset; throws std::invalid_argument on other names.
 void gtaoPresetCounts(const std::string& preset, int& slices, int& steps);
 GtaoSettings readGtaoSettings(const ParamMap& params);
-GlTexture runGtao(const AoPassContext& ctx, const GtaoSettings& settings);
+// `filtered`: a blur or upsample follows, so values up to AO_WORKING_MAX are kept for it
+// (XeGTAO's working range) and the filter clamps to [0, 1]; otherwise clamped here.
+GlTexture runGtao(const AoPassContext& ctx, const GtaoSettings& settings, bool filtered);
 
 }  // namespace vct

@@ -31,13 +31,13 @@ bool readHalfRes(const ParamMap& params) {
                           "screen-space AO: evaluate at half resolution, then a depth-aware upsample");
 }
 
-GlTexture evaluate(const std::string& method, const AoPassContext& ctx, const ParamMap& params) {
+GlTexture evaluate(const std::string& method, const AoPassContext& ctx, const ParamMap& params, bool filtered) {
     if (method == "ssao-crytek") return runSsao(ctx, gpu::SSAO_KERNEL_SPHERE, readSsaoSettings(params));
     if (method == "ssao-hemisphere") return runSsao(ctx, gpu::SSAO_KERNEL_HEMISPHERE, readSsaoSettings(params));
     if (method == "ssao-horizon") return runHorizonAo(ctx, readHorizonSettings(params));
     if (method == "alchemy") return runAlchemy(ctx, readAlchemySettings(params));
     if (method == "hbao") return runHbao(ctx, readHbaoSettings(params));
-    if (method == "gtao") return runGtao(ctx, readGtaoSettings(params));
+    if (method == "gtao") return runGtao(ctx, readGtaoSettings(params), filtered);
     throw std::invalid_argument("unknown screen-space AO method '" + method + "'");
 }
 
@@ -73,11 +73,11 @@ GlTexture computeScreenSpaceAO(const std::string& method, const GBuffer& gbuffer
     GlTexture ao;
     {
         auto scope = timer.scope("ssao");
-        ao = evaluate(method, ctx, params);
+        ao = evaluate(method, ctx, params, blur.enabled || halfRes);
     }
     if (blur.enabled) {
         auto scope = timer.scope("blur");
-        ao = blur.mode == AoBlurMode::Box ? runBoxBlur(ctx, ao) : runBilateralBlur(ctx, ao, blur);
+        ao = blur.mode == AoBlurMode::Box ? runBoxBlur(ctx, ao) : runBilateralBlur(ctx, ao, blur, !halfRes);
     }
     if (halfRes) {
         auto scope = timer.scope("upsample");

@@ -1,5 +1,6 @@
 #include "cone/cone_gpu.h"
 
+#include <cmath>
 #include <map>
 #include <stdexcept>
 

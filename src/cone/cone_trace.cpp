@@ -34,8 +34,8 @@ void checkGBuffer(const GBuffer& g, const View& view, const std::string& pass) {
 }
 
 // One cone pass: AO (R32F) or GI (RGBA32F).
-GlTexture tracePass(ConeMode mode, const VoxelGrid& grid, const GBuffer& gbuffer, const View& view,
-                    float maxDistWorld, float sky, const ConeSettings& settings) {
+GlTexture tracePass(ConeMode mode, const VoxelGrid& grid, const GBuffer& gbuffer, float maxDistWorld, float sky,
+                    const ConeSettings& settings) {
     const bool gi = mode == ConeMode::GI;
     const bool aniso = useAniso(grid, settings);
 
@@ -88,7 +88,7 @@ GlTexture coneTraceAO(const VoxelGrid& grid, const GBuffer& gbuffer, const View&
     if (!(radius >= 0.f) || !std::isfinite(radius))
         throw std::invalid_argument("coneTraceAO: radius " + std::to_string(radius) + " must be finite and >= 0");
     auto scope = timer.scope("cone_ao");
-    return tracePass(ConeMode::AO, grid, gbuffer, view, radius, 0.f, settings);
+    return tracePass(ConeMode::AO, grid, gbuffer, radius, 0.f, settings);
 }
 
 GlTexture coneTraceGI(const VoxelGrid& grid, const GBuffer& gbuffer, const View& view, float sky,
@@ -102,7 +102,7 @@ GlTexture coneTraceGI(const VoxelGrid& grid, const GBuffer& gbuffer, const View&
     // GI cones run until they leave the grid: the box diagonal bounds every path inside it.
     float diagonal = glm::length(glm::vec3(grid.resolution)) * grid.voxelSize;
     auto scope = timer.scope("cone_gi");
-    return tracePass(ConeMode::GI, grid, gbuffer, view, 2.f * diagonal, sky, settings);
+    return tracePass(ConeMode::GI, grid, gbuffer, 2.f * diagonal, sky, settings);
 }
 
 }  // namespace vct

@@ -36,7 +36,11 @@ GlTexture rayMarchVoxels(const VoxelGrid& grid, const View& view, const std::str
     u.image = glm::ivec4(view.width, view.height, 0, 0);
 
     auto scope = timer.scope("cone_view");
-    GLuint program = coneProgram("cone/cone_raymarch.glsl", {{"CONE_CHANNEL", std::to_string(channel)}});
+    // The channel is a preprocessor switch: GLSL `const int`s are not visible to #if.
+    ShaderDefines defines;
+    if (channel == gpu::CONE_CHANNEL_RADIANCE) defines = {{"CONE_VIEW_RADIANCE", "1"}};
+    if (channel == gpu::CONE_CHANNEL_ALBEDO) defines = {{"CONE_VIEW_ALBEDO", "1"}};
+    GLuint program = coneProgram("cone/cone_raymarch.glsl", defines);
     GlTexture out = createTexture2D(GL_RGBA32F, view.width, view.height);
     GlBuffer ubo = bindConeUniforms(u);
     glBindTextureUnit(gpu::CONE_UNIT_OPACITY,

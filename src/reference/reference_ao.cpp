@@ -24,6 +24,7 @@ void ReferenceSettings::validate() const {
     if (spp < 1 || spp > (1 << 20)) fail("spp must be in [1, 2^20], got " + std::to_string(spp));
     if (!(targetStderr >= 0.f) || !std::isfinite(targetStderr)) fail("targetStderr must be finite and >= 0");
     if (minSpp < 1) fail("minSpp must be >= 1");
+    if (replicates < 1 || replicates > kMaxReplicates) fail("replicates must be in [1, 8]");
     if (bounces < 1 || bounces > 1024) fail("bounces must be in [1, 1024], got " + std::to_string(bounces));
     if (rouletteBounce < 1) fail("rouletteBounce must be >= 1");
     if (!(sky >= 0.f) || !std::isfinite(sky)) fail("sky must be finite and >= 0");
@@ -36,6 +37,8 @@ ReferenceSettings referenceSettingsFromParams(const ParamMap& params, ReferenceS
     s.targetStderr = params.getFloat("reference.target-stderr", s.targetStderr, 0.f, 1e30f,
                                      "stop once the image-mean standard error is below this (0 = off)");
     s.minSpp = params.getInt("reference.min-spp", s.minSpp, 1, 1 << 20, "no early stop before this many spp");
+    s.replicates = params.getInt("reference.replicates", s.replicates, 1, kMaxReplicates,
+                                 "independent sample scrambles behind the error bar (1 = one stream)");
     s.bounces = params.getInt("reference.bounces", s.bounces, 1, 1024, "GI: max diffuse reflections per path");
     s.rouletteBounce = params.getInt("reference.roulette-bounce", s.rouletteBounce, 1, 1 << 20,
                                      "GI: Russian roulette from this bounce on");
@@ -56,31 +59,36 @@ Image toImage(const std::vector<float>& values, int width, int height) {
     return img;
 }
 
-// Totals of the progressive passes: 8, 16, 32, ... then the budget.
-std::vector<int> passTotals(int spp) {
-    std::vector<int> totals;
-    for (int t = 8; t < spp; t *= 2) totals.push_back(t);
-    totals.push_back(spp);
-    return totals;
-}
-
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// Per-point Bernoulli statistics -> per-point standard error and that of the mean.
-void finishStatistics(ReferenceAO& out, const std::vector<uint32_t>& open, const std::vector<uint32_t>& samples,
+// Per-point statistics from the replicate counts -> per-point standard error and that of
+// the mean over valid points. `perReplicate` samples went into each replicate.
+void finishStatistics(ReferenceAO& out, const std::vector<uint32_t>& open, int perReplicate, int replicates,
                       const std::vector<uint8_t>& valid) {
     double sumVar = 0.0;
     size_t validCount = 0;
-    for (size_t i = 0; i < open.size(); ++i) {
-        if (!valid[i] || samples[i] == 0) {
+    for (size_t i = 0; i < valid.size(); ++i) {
+        if (!valid[i]) {
             out.ao[i] = 1.f;
             out.standardError[i] = 0.f;
             continue;
         }
-        double n = samples[i];
-        double p = open[i] / n;
-        double se = n > 1 ? std::sqrt(p * (1.0 - p) / (n - 1.0)) : 0.5;
-        out.ao[i] = float(p);
+        double se = 0.0, mean = 0.0;
+        if (replicates > 1) {
+            double m[kMaxReplicates];
+            for (int r = 0; r < replicates; ++r) {
+                m[r] = double(open[i * replicates + r]) / perReplicate;
+                mean += m[r] / replicates;
+            }
+            double ss = 0.0;
+            for (int r = 0; r < replicates; ++r) ss += (m[r] - mean) * (m[r] - mean);
+            se = std::sqrt(ss / (replicates * (replicates - 1.0)));
+        } else {  // one stream: i.i.d. Bernoulli formula
+            double n = perReplicate;
+            mean = open[i] / n;
+            se = n > 1 ? std::sqrt(mean * (1.0 - mean) / (n - 1.0)) : 0.5;
+        }
+        out.ao[i] = float(mean);
         out.standardError[i] = float(se);
         sumVar += se * se;
         ++validCount;
@@ -126,35 +134,38 @@ ReferenceAO referenceAO(const EmbreeScene& scene, const std::vector<SurfacePoint
     ReferenceAO out;
     out.ao.assign(n, 1.f);
     out.standardError.assign(n, 0.f);
-    std::vector<uint32_t> open(n, 0), samples(n, 0);
+    const SampleSchedule schedule = sampleSchedule(settings.spp, settings.replicates);
+    const int K = schedule.replicates;
+    std::vector<uint32_t> open(n * size_t(K), 0);
     std::atomic<uint64_t> rays{0};
     const float radius = settings.radius;
-    ProgressBar progress("reference AO", uint64_t(n) * uint64_t(settings.spp), settings.progress);
+    ProgressBar progress("reference AO", uint64_t(n) * uint64_t(schedule.spp), settings.progress);
     auto start = std::chrono::steady_clock::now();
 
     int done = 0;
-    for (int total : passTotals(settings.spp)) {
-        progress.setTotal(uint64_t(n) * uint64_t(settings.spp), "spp " + std::to_string(total));
+    for (int total : schedule.totals) {
+        progress.setTotal(uint64_t(n) * uint64_t(schedule.spp), "spp " + std::to_string(total));
         tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 64), [&](const tbb::blocked_range<size_t>& r) {
             OcclusionBatch batch(scene, settings.rayMode);
+            // Owner = point * K + replicate.
             auto visit = [&](uint32_t owner, bool visible) { open[owner] += visible ? 1u : 0u; };
             for (size_t i = r.begin(); i != r.end(); ++i) {
                 if (!valid[i]) continue;
                 const PointSetup& ps = setup[i];
-                uint64_t stream = streamSeed(settings.seed, i);
+                const ReplicatedPair directions(streamSeed(settings.seed, i), K, 0);
                 for (int k = done; k < total; ++k) {
-                    glm::vec3 w = ps.frame.toWorld(sampleCosineHemisphere(sobol2D(stream, 0, uint32_t(k))));
+                    glm::vec2 u = directions.sample(uint32_t(k));
+                    glm::vec3 w = ps.frame.toWorld(sampleCosineHemisphere(u));
                     if (glm::dot(w, ps.geomNormal) <= 0.f) continue;  // below the surface: occluded
-                    batch.add(ps.origin, w, radius, uint32_t(i), visit);
+                    batch.add(ps.origin, w, radius, uint32_t(i * size_t(K) + size_t(k % K)), visit);
                 }
-                samples[i] = uint32_t(total);
             }
             batch.flush(visit);
             rays.fetch_add(batch.raysTraced());
             progress.advance(uint64_t(r.size()) * uint64_t(total - done));
         });
         done = total;
-        finishStatistics(out, open, samples, valid);
+        finishStatistics(out, open, total / K, K, valid);
         if (settings.targetStderr > 0.f && done >= settings.minSpp && out.meanStderr < settings.targetStderr) break;
     }
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -179,43 +190,45 @@ ReferenceAO referenceAOPixelArea(const EmbreeScene& scene, const View& view, con
     out.height = view.height;
     out.ao.assign(n, 1.f);
     out.standardError.assign(n, 0.f);
-    std::vector<uint32_t> open(n, 0), samples(n, 0);
+    const SampleSchedule schedule = sampleSchedule(settings.spp, settings.replicates);
+    const int K = schedule.replicates;
+    std::vector<uint32_t> open(n * size_t(K), 0);
     std::vector<uint8_t> valid(n, 0);  // any sample hit a surface
     std::atomic<uint64_t> rays{0}, primary{0};
     const float radius = settings.radius;
     const float inf = std::numeric_limits<float>::infinity();
-    ProgressBar progress("reference AO (pixel area)", uint64_t(n) * uint64_t(settings.spp), settings.progress);
+    ProgressBar progress("reference AO (pixel area)", uint64_t(n) * uint64_t(schedule.spp), settings.progress);
     auto start = std::chrono::steady_clock::now();
 
     int done = 0;
-    for (int total : passTotals(settings.spp)) {
-        progress.setTotal(uint64_t(n) * uint64_t(settings.spp), "spp " + std::to_string(total));
+    for (int total : schedule.totals) {
+        progress.setTotal(uint64_t(n) * uint64_t(schedule.spp), "spp " + std::to_string(total));
         tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 64), [&](const tbb::blocked_range<size_t>& r) {
             OcclusionBatch batch(scene, settings.rayMode);
             auto visit = [&](uint32_t owner, bool visible) { open[owner] += visible ? 1u : 0u; };
             uint64_t primaryCount = 0;
             for (size_t i = r.begin(); i != r.end(); ++i) {
                 const int x = int(i % size_t(view.width)), y = int(i / size_t(view.width));
-                uint64_t stream = streamSeed(settings.seed, i);
+                const uint64_t stream = streamSeed(settings.seed, i);
+                const ReplicatedPair jitters(stream, K, 0), directions(stream, K, 1);
                 for (int k = done; k < total; ++k) {
-                    glm::vec2 jitter = sobol2D(stream, 0, uint32_t(k));
+                    const uint32_t owner = uint32_t(i * size_t(K) + size_t(k % K));
+                    glm::vec2 jitter = jitters.sample(uint32_t(k));
                     CameraRay cr = cameraRay(view, float(x) + jitter.x, float(y) + jitter.y);
                     uint32_t tri;
                     float u, v, t;
                     ++primaryCount;
                     if (!scene.intersect(cr.origin, cr.direction, cr.tnear, inf, &tri, &u, &v, &t)) {
-                        open[i] += 1;  // sky sample: A = 1
+                        open[owner] += 1;  // sky sample: A = 1
                         continue;
                     }
                     valid[i] = 1;
                     SurfaceHit h = scene.surfaceAt(tri, u, v, cr.direction);
                     glm::vec3 w = Frame::fromZ(h.shadingNormal)
-                                      .toWorld(sampleCosineHemisphere(sobol2D(stream, 1, uint32_t(k))));
+                                      .toWorld(sampleCosineHemisphere(directions.sample(uint32_t(k))));
                     if (glm::dot(w, h.geomNormal) <= 0.f) continue;
-                    batch.add(offsetRayOrigin(h.position, h.geomNormal, h.errorScale), w, radius, uint32_t(i),
-                              visit);
+                    batch.add(offsetRayOrigin(h.position, h.geomNormal, h.errorScale), w, radius, owner, visit);
                 }
-                samples[i] = uint32_t(total);
             }
             batch.flush(visit);
             rays.fetch_add(batch.raysTraced());
@@ -225,7 +238,7 @@ ReferenceAO referenceAOPixelArea(const EmbreeScene& scene, const View& view, con
         done = total;
         // Pixels where no sample hit are sky (A = 1 exactly); partly covered pixels keep their
         // sky samples as 1s in the Bernoulli mean.
-        finishStatistics(out, open, samples, valid);
+        finishStatistics(out, open, total / K, K, valid);
         if (settings.targetStderr > 0.f && done >= settings.minSpp && out.meanStderr < settings.targetStderr) break;
     }
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

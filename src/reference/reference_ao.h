@@ -11,9 +11,12 @@
 // Progressive: passes to 8, 16, 32, ... spp (then `spp`), stopping early once the standard
 // error of the image mean drops below `targetStderr`.
 //
-// Standard errors are the i.i.d. (Bernoulli) formula sqrt(p (1 - p) / (n - 1)) per point.
-// Scrambled Sobol converges faster than i.i.d. sampling, so this over-states the true error
-// (tests/cpu/reference_ao_test.cpp measures the ratio): a conservative error bar.
+// Standard errors: by default from 4 independently scrambled replicates of the samples
+// (randomized QMC, sampler.h): per point sqrt(sum (m_r - A)^2 / (K (K - 1))) over the
+// replicate means m_r, an unbiased variance estimate (K - 1 degrees of freedom per point, so
+// noisy for one point, accurate summed over an image). With replicates = 1 (or below 8 spp):
+// the i.i.d. Bernoulli formula, an over-estimate for a single scrambled Sobol stream.
+// tests/cpu/reference_ao_test.cpp checks both against the measured spread.
 #pragma once
 
 #include "image/image.h"
@@ -39,9 +42,11 @@ struct SurfacePoint {
 
 struct ReferenceSettings {
     float radius = 1.f;        // AO radius R, world units, (0, inf)
-    int spp = 64;              // samples per point / pixel (the budget), [1, 1<<20]
+    int spp = 64;              // samples per point / pixel (budget, rounded up to a multiple of replicates), [1, 1<<20]
     uint64_t seed = 0;         // sample scramble seed
     float targetStderr = 0.f;  // stop early once the image-mean standard error < this; 0 = off
+    int replicates = 4;        // independent scrambles behind the error bar, [1, 8]; 1 = one stream:
+                               // less noise, error bar over-stated (see sampler.h)
     int minSpp = 16;           // no early stop before this many spp, [1, spp]
     bool progress = true;      // progress bar on stderr (only when it is a terminal)
     int bounces = 4;           // GI: max diffuse reflections per path (1 = direct light only), [1, 1024]
@@ -52,7 +57,7 @@ struct ReferenceSettings {
     void validate() const;  // throws std::invalid_argument naming the bad field
 };
 
-// Reads "reference.spp", "reference.seed", "reference.target-stderr", "reference.min-spp",
+// Reads "reference.spp", "reference.seed", "reference.target-stderr", "reference.min-spp", "reference.replicates",
 // "reference.bounces", "reference.roulette-bounce", "reference.ray-mode" on top of `base`.
 // The AO radius and the sky radiance are shared by every method: the caller sets them.
 ReferenceSettings referenceSettingsFromParams(const ParamMap& params, ReferenceSettings base = {});

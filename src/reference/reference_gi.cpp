@@ -109,6 +109,12 @@ struct PathTracer {
 
     // Dimension pairs of the sampler: 0 = pixel jitter; bounce b uses 1 + 3b (light choice,
     // roulette), 2 + 3b (point on the emitter), 3 + 3b (BSDF direction).
+    int replicates;
+
+    glm::vec2 sample(uint64_t stream, int dimPair, uint32_t index) const {
+        return replicatedSample(stream, replicates, uint32_t(dimPair), index);
+    }
+
     PathResult trace(const CameraRay& cr, uint64_t stream, uint32_t index) const {
         PathResult out;
         uint32_t tri;
@@ -126,7 +132,7 @@ struct PathTracer {
             if (maxComponent(albedo) <= 0.f) break;
             const glm::vec3 origin = offsetRayOrigin(h.position, h.geomNormal, h.errorScale);
             const glm::vec3 f = albedo * kInvPi;
-            glm::vec2 uChoice = sobol2D(stream, 1 + 3 * bounce, index);
+            glm::vec2 uChoice = sample(stream, 1 + 3 * bounce, index);
 
             // Next-event estimation: every punctual light.
             for (const Light& light : s.lights) {
@@ -143,7 +149,7 @@ struct PathTracer {
             // Next-event estimation: one point on one emissive triangle, MIS-weighted.
             if (!emitters.empty()) {
                 uint32_t lt = emitters.pick(uChoice.x);
-                glm::vec3 b = sampleUniformTriangle(sobol2D(stream, 2 + 3 * bounce, index));
+                glm::vec3 b = sampleUniformTriangle(sample(stream, 2 + 3 * bounce, index));
                 const glm::uvec3& ti = s.triangles[lt];
                 glm::vec3 q = b.x * s.positions[ti.x] + b.y * s.positions[ti.y] + b.z * s.positions[ti.z];
                 glm::vec3 d = q - h.position;
@@ -170,7 +176,7 @@ struct PathTracer {
 
             // BSDF sampling: cosine-weighted, so f cos / pdf = albedo.
             glm::vec3 wi = Frame::fromZ(h.shadingNormal)
-                               .toWorld(sampleCosineHemisphere(sobol2D(stream, 3 + 3 * bounce, index)));
+                               .toWorld(sampleCosineHemisphere(sample(stream, 3 + 3 * bounce, index)));
             float cosG = glm::dot(wi, h.geomNormal);
             if (cosG <= 0.f) break;  // below the surface
             float pdfBsdf = glm::dot(wi, h.shadingNormal) * kInvPi;
@@ -218,7 +224,9 @@ ReferenceGI referenceGI(const EmbreeScene& scene, const View& view, const Refere
             throw std::invalid_argument("referenceGI: light " + std::to_string(i) + " ('" + s.lights[i].name +
                                         "') is not finite");
     const EmitterTable emitters(s);
-    const PathTracer tracer{scene, s, emitters, settings};
+    const SampleSchedule schedule = sampleSchedule(settings.spp, settings.replicates);
+    const int K = schedule.replicates;
+    const PathTracer tracer{scene, s, emitters, settings, K};
 
     const int W = view.width, H = view.height;
     const size_t n = size_t(W) * size_t(H);
@@ -226,22 +234,47 @@ ReferenceGI referenceGI(const EmbreeScene& scene, const View& view, const Refere
     struct Sums {
         glm::dvec3 emission{0.0}, direct{0.0}, indirect{0.0}, indirectSq{0.0};
         double indirectMeanSq = 0.0;
+        glm::dvec3 replicateIndirect[kMaxReplicates] = {};
         uint32_t hits = 0, samples = 0;
     };
     std::vector<Sums> sums(n);
+    // Standard error of the indirect radiance per channel (and of the channel mean, as the
+    // 4th component) from the replicate means, or the i.i.d. formula for one stream.
+    auto indirectStderr = [&](const Sums& acc) {
+        const double ns = std::max(1u, acc.samples);
+        glm::dvec4 se(0.0);
+        if (K > 1) {
+            const double perRep = ns / K;
+            glm::dvec4 mean(0.0), ss(0.0);
+            for (int r = 0; r < K; ++r) {
+                glm::dvec3 m = acc.replicateIndirect[r] / perRep;
+                mean += glm::dvec4(m, (m.x + m.y + m.z) / 3.0) / double(K);
+            }
+            for (int r = 0; r < K; ++r) {
+                glm::dvec3 m = acc.replicateIndirect[r] / perRep;
+                glm::dvec4 d = glm::dvec4(m, (m.x + m.y + m.z) / 3.0) - mean;
+                ss += d * d;
+            }
+            se = glm::sqrt(ss / (K * (K - 1.0)));
+        } else if (ns > 1) {
+            glm::dvec3 mean = acc.indirect / ns;
+            double mm = (mean.x + mean.y + mean.z) / 3.0;
+            glm::dvec3 var = glm::max(acc.indirectSq / ns - mean * mean, 0.0) * ns / (ns - 1);
+            double varM = std::max(0.0, acc.indirectMeanSq / ns - mm * mm) * ns / (ns - 1);
+            se = glm::sqrt(glm::dvec4(var, varM) / ns);
+        }
+        return se;
+    };
     std::atomic<uint64_t> rays{0};
-    ProgressBar progress("reference GI", uint64_t(n) * uint64_t(settings.spp), settings.progress);
+    ProgressBar progress("reference GI", uint64_t(n) * uint64_t(schedule.spp), settings.progress);
     auto start = std::chrono::steady_clock::now();
 
     ReferenceGI out;
     out.width = W;
     out.height = H;
     int done = 0;
-    std::vector<int> totals;
-    for (int t = 8; t < settings.spp; t *= 2) totals.push_back(t);
-    totals.push_back(settings.spp);
-    for (int total : totals) {
-        progress.setTotal(uint64_t(n) * uint64_t(settings.spp), "spp " + std::to_string(total));
+    for (int total : schedule.totals) {
+        progress.setTotal(uint64_t(n) * uint64_t(schedule.spp), "spp " + std::to_string(total));
         tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& r) {
             uint64_t localRays = 0;
             for (size_t i = r.begin(); i != r.end(); ++i) {
@@ -249,7 +282,7 @@ ReferenceGI referenceGI(const EmbreeScene& scene, const View& view, const Refere
                 uint64_t stream = streamSeed(settings.seed, i);
                 Sums& acc = sums[i];
                 for (int k = done; k < total; ++k) {
-                    glm::vec2 jitter = pixelArea ? sobol2D(stream, 0, uint32_t(k)) : glm::vec2(0.5f);
+                    glm::vec2 jitter = pixelArea ? tracer.sample(stream, 0, uint32_t(k)) : glm::vec2(0.5f);
                     PathResult p = tracer.trace(cameraRay(view, float(x) + jitter.x, float(y) + jitter.y), stream,
                                                 uint32_t(k));
                     localRays += p.rays;
@@ -261,6 +294,7 @@ ReferenceGI referenceGI(const EmbreeScene& scene, const View& view, const Refere
                     acc.direct += glm::dvec3(p.direct);
                     acc.indirect += ind;
                     acc.indirectSq += ind * ind;
+                    acc.replicateIndirect[k % K] += ind;
                     double m = (ind.x + ind.y + ind.z) / 3.0;
                     acc.indirectMeanSq += m * m;
                 }
@@ -274,11 +308,9 @@ ReferenceGI referenceGI(const EmbreeScene& scene, const View& view, const Refere
         double sumVar = 0.0;
         size_t covered = 0;
         for (const Sums& acc : sums) {
-            if (!acc.hits) continue;
-            double ns = acc.samples;  // sky samples contribute 0 to indirect
-            double mean = (acc.indirect.x + acc.indirect.y + acc.indirect.z) / 3.0 / ns;
-            double var = ns > 1 ? std::max(0.0, acc.indirectMeanSq / ns - mean * mean) * ns / (ns - 1) : 0.0;
-            sumVar += var / ns;
+            if (!acc.hits) continue;  // sky samples contribute 0 to indirect
+            double se = indirectStderr(acc).w;
+            sumVar += se * se;
             ++covered;
         }
         out.meanStderr = covered ? std::sqrt(sumVar) / double(covered) : 0.0;
@@ -297,14 +329,14 @@ ReferenceGI referenceGI(const EmbreeScene& scene, const View& view, const Refere
         double ns = std::max(1u, acc.samples);
         double skyFraction = 1.0 - acc.hits / ns;
         out.coverage.at(x, y) = float(acc.hits / ns);
+        glm::dvec4 se = indirectStderr(acc);
         for (int c = 0; c < 3; ++c) {
             double le = acc.emission[c] / ns, di = acc.direct[c] / ns, in = acc.indirect[c] / ns;
-            double var = ns > 1 ? std::max(0.0, acc.indirectSq[c] / ns - in * in) * ns / (ns - 1) : 0.0;
             out.emission.at(x, y, c) = float(le);
             out.direct.at(x, y, c) = float(di);
             out.indirect.at(x, y, c) = float(in);
             out.beauty.at(x, y, c) = float(le + di + in + skyFraction * settings.sky);
-            out.indirectStderr.at(x, y, c) = float(std::sqrt(var / ns));
+            out.indirectStderr.at(x, y, c) = float(se[c]);
         }
     }
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

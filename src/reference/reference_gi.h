@@ -35,7 +35,7 @@ namespace vct {
 struct ReferenceGI {
     int width = 0, height = 0;
     Image emission, direct, indirect, beauty;  // RGB, top row first
-    Image indirectStderr;  // RGB per-pixel standard error of `indirect` (i.i.d. formula)
+    Image indirectStderr;  // RGB per-pixel standard error of `indirect` (replicates, see reference_ao.h)
     Image coverage;        // 1 channel: fraction of primary samples that hit a surface (0 = sky pixel)
     double meanStderr = 0.0;  // standard error of the mean of (r+g+b)/3 of `indirect` over covered pixels
     int sppUsed = 0;

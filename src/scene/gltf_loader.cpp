@@ -21,6 +21,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <tuple>
 #include <sstream>
 
 namespace vct {
@@ -103,6 +105,39 @@ bool isIntegerComponent(int componentType) {
     return componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && componentType != TINYGLTF_COMPONENT_TYPE_DOUBLE;
 }
 
+// The decoded image as 8-bit RGBA (grey replicated, missing alpha = 255, 16-bit rounded to 8).
+std::vector<uint8_t> rgba8FromImage(const tinygltf::Image& image) {
+    const size_t texels = size_t(image.width) * size_t(image.height);
+    const int comps = image.component;
+    const int bytesPerComp = image.bits == 16 ? 2 : 1;
+    std::vector<uint8_t> rgba(texels * 4);
+    if (comps == 4 && bytesPerComp == 1) {  // what tinygltf's default stb loader produces
+        std::memcpy(rgba.data(), image.image.data(), texels * 4);
+        return rgba;
+    }
+    for (size_t i = 0; i < texels; ++i) {
+        uint8_t c[4] = {0, 0, 0, 255};
+        for (int k = 0; k < comps; ++k) {
+            const unsigned char* p = image.image.data() + (i * size_t(comps) + size_t(k)) * size_t(bytesPerComp);
+            uint32_t v = p[0];
+            if (bytesPerComp == 2) {
+                uint16_t v16;
+                std::memcpy(&v16, p, 2);
+                v = (uint32_t(v16) * 255u + 32767u) / 65535u;
+            }
+            c[k] = uint8_t(v);
+        }
+        uint8_t* o = &rgba[4 * i];
+        if (comps <= 2) {  // grey (+ alpha)
+            o[0] = o[1] = o[2] = c[0];
+            o[3] = comps == 2 ? c[1] : 255;
+        } else {
+            o[0] = c[0]; o[1] = c[1]; o[2] = c[2]; o[3] = comps == 4 ? c[3] : 255;
+        }
+    }
+    return rgba;
+}
+
 glm::mat4 localFromNode(const tinygltf::Node& node) {
     if (node.matrix.size() == 16) {
         glm::dmat4 m = glm::make_mat4(node.matrix.data());  // glTF matrices are column-major, as glm
@@ -133,6 +168,7 @@ struct Loader {
     std::string path;
     Scene scene;
     std::vector<int> sceneTextureFromGltf;  // -1 = not converted yet
+    std::map<std::tuple<int, bool, bool>, int> sceneTextureFromImage;  // (image, repeatS, repeatT) -> texture
     int defaultMaterial = -1;
     size_t degenerateCount = 0;
     size_t repairedNormalCount = 0;
@@ -259,6 +295,19 @@ struct Loader {
 
         const tinygltf::Texture& tex = model.textures[size_t(gltfTexture)];
         const std::string where = label("texture", gltfTexture, tex.name);
+        bool repeatS = true, repeatT = true;
+        if (tex.sampler >= 0) {
+            if (tex.sampler >= int(model.samplers.size()))
+                fail(where + ": sampler " + std::to_string(tex.sampler) + " out of range [0, " +
+                     std::to_string(model.samplers.size()) + ")");
+            const tinygltf::Sampler& s = model.samplers[size_t(tex.sampler)];
+            // MIRRORED_REPEAT is read as REPEAT: the Texture struct has no mirror mode.
+            repeatS = s.wrapS != TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+            repeatT = s.wrapT != TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+        }
+        // Many glTF textures often share one image (Lost Empire: 45 textures, one atlas): convert it once.
+        const auto shared = sceneTextureFromImage.find({tex.source, repeatS, repeatT});
+        if (shared != sceneTextureFromImage.end()) return mapped = shared->second;
         const int imageCount = int(model.images.size());
         if (tex.source < 0 || tex.source >= imageCount)
             fail(where + ": image " + std::to_string(tex.source) + " out of range [0, " + std::to_string(imageCount) + ")");
@@ -274,37 +323,11 @@ struct Loader {
         out.name = image.name.empty() ? (image.uri.empty() ? tex.name : image.uri) : image.name;
         out.width = image.width;
         out.height = image.height;
-        const size_t texels = size_t(image.width) * size_t(image.height);
-        out.rgba.resize(texels * 4);
-        for (size_t i = 0; i < texels; ++i) {
-            uint8_t c[4] = {0, 0, 0, 255};
-            for (int k = 0; k < comps; ++k) {
-                const unsigned char* p = image.image.data() + (i * size_t(comps) + size_t(k)) * size_t(bytesPerComp);
-                uint32_t v = p[0];
-                if (bytesPerComp == 2) {
-                    uint16_t v16; std::memcpy(&v16, p, 2);
-                    v = (uint32_t(v16) * 255u + 32767u) / 65535u;
-                }
-                c[k] = uint8_t(v);
-            }
-            uint8_t* o = &out.rgba[4 * i];
-            if (comps <= 2) {  // grey (+ alpha)
-                o[0] = o[1] = o[2] = c[0];
-                o[3] = comps == 2 ? c[1] : 255;
-            } else {
-                o[0] = c[0]; o[1] = c[1]; o[2] = c[2]; o[3] = comps == 4 ? c[3] : 255;
-            }
-        }
-        if (tex.sampler >= 0) {
-            if (tex.sampler >= int(model.samplers.size()))
-                fail(where + ": sampler " + std::to_string(tex.sampler) + " out of range [0, " +
-                     std::to_string(model.samplers.size()) + ")");
-            const tinygltf::Sampler& s = model.samplers[size_t(tex.sampler)];
-            // MIRRORED_REPEAT is read as REPEAT: the Texture struct has no mirror mode.
-            out.repeatS = s.wrapS != TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
-            out.repeatT = s.wrapT != TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
-        }
+        out.rgba = rgba8FromImage(image);
+        out.repeatS = repeatS;
+        out.repeatT = repeatT;
         mapped = int(scene.textures.size());
+        sceneTextureFromImage[{tex.source, repeatS, repeatT}] = mapped;
         scene.textures.push_back(std::move(out));
         return mapped;
     }

@@ -96,22 +96,23 @@ SceneBuilder courtyard() {
     b.addQuad("glow_panel", glm::vec3(2.f, 1.2f, -4.69f), glm::vec3(1.5f, 0.f, 0.f), glm::vec3(0.f, 0.6f, 0.f), glow);
     addSun(b, 3.f);
     b.addPointLight("lamp", glm::vec3(-1.3f, 1.6f, 0.7f), glm::vec3(1.f, 0.8f, 0.55f), 3.f);
-    b.addCamera("main", glm::vec3(5.5f, 4.f, 7.5f), glm::vec3(-0.5f, 0.8f, -1.f), glm::radians(50.f), 0.1f, 60.f);
+    b.addCamera("main", glm::vec3(4.f, 2.8f, 5.2f), glm::vec3(-0.8f, 0.8f, -1.5f), glm::radians(50.f), 0.1f, 60.f);
     return b;
 }
 
 // All in-view directions point down (pitch 32 > half fov 25), so nothing above the eye is visible:
-// the slab at 0.95-1.05 m covers visible floor 0.8 m ahead of the eye and extends 3 m behind it.
+// the slab at 0.56-0.66 m (eye at 0.5 m) covers visible floor 1.2 m ahead of the eye and extends 3 m
+// behind it.
 SceneBuilder offscreenOverhang() {
     SceneBuilder b("offscreen_overhang");
     const int floor = b.addMaterial("floor", kFloorGrey);
     const int blue = b.addMaterial("occluder", kOccluderBlue);
     const int wall = b.addMaterial("wall", kWallBeige);
     b.addPlane("floor", glm::vec3(0.f, 0.f, 0.f), glm::vec2(12.f, 12.f), floor);
-    b.addBox("box", glm::vec3(-0.3f, 0.f, -1.6f), glm::vec3(0.3f, 0.6f, -1.0f), wall);
-    offscreenBox(b, "overhang", glm::vec3(-3.f, 0.95f, 0.8f), glm::vec3(3.f, 1.05f, 5.f), blue);
+    b.addBox("box", glm::vec3(0.2f, 0.f, 0.2f), glm::vec3(0.6f, 0.2f, 0.6f), wall);
+    offscreenBox(b, "overhang", glm::vec3(-3.f, 0.56f, 0.8f), glm::vec3(3.f, 0.66f, 5.f), blue);
     addSun(b);
-    const glm::vec3 eye(0.f, 0.8f, 2.f);
+    const glm::vec3 eye(0.f, 0.5f, 2.f);
     b.addCamera("view", eye, targetPitchedDown(eye, 32.f), glm::radians(50.f), 0.05f, 50.f);
     return b;
 }
@@ -133,7 +134,7 @@ SceneBuilder offscreenWallBehind() {
 }
 
 // At 16:9 the right frustum plane reaches x = 1.24 at the back wall (1.5 m away); the pillar starts at
-// x = 1.35. At 1:1 the visible wall ends near x = 0.7.
+// x = 1.28. At 1:1 the visible wall ends near x = 0.7.
 SceneBuilder offscreenSide() {
     SceneBuilder b("offscreen_side");
     const int floor = b.addMaterial("floor", kFloorGrey);
@@ -141,7 +142,7 @@ SceneBuilder offscreenSide() {
     const int wall = b.addMaterial("wall", kWallBeige);
     b.addPlane("floor", glm::vec3(0.f, 0.f, 1.f), glm::vec2(10.f, 10.f), floor);
     b.addBox("back_wall", glm::vec3(-4.f, 0.f, -1.7f), glm::vec3(4.f, 3.f, -1.5f), wall);
-    offscreenBox(b, "pillar", glm::vec3(1.35f, 0.f, -1.5f), glm::vec3(1.85f, 2.2f, -1.1f), blue);
+    offscreenBox(b, "pillar", glm::vec3(1.28f, 0.f, -1.5f), glm::vec3(1.85f, 2.2f, -1.1f), blue);
     addSun(b);
     b.addCamera("view", glm::vec3(0.f, 1.f, 0.f), glm::vec3(0.f, 0.9f, -1.5f), glm::radians(50.f), 0.05f, 50.f);
     return b;

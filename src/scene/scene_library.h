@@ -9,7 +9,7 @@
 //   offscreen_overhang     a slab above and behind the camera over floor that is in view
 //   offscreen_wall_behind  a wall 5 cm behind the camera, which looks down at the floor before it
 //   offscreen_side         a pillar against the back wall just outside the right frustum plane
-//                          (outside for any aspect <= 16:9; the visible wall ends 0.6 m from it at 1:1)
+//                          (outside for any aspect <= 16:9; the visible wall ends ~0.6 m from it at 1:1)
 //   offscreen_hidden       a box hidden (from the camera) behind a nearer box, against a visible wall
 //   offscreen_thin         a 1 cm shelf and a 1 cm fin in planes through the eye: seen edge-on
 //   open_plane             a 100 m x 100 m plane, a camera looking down at it, a sun straight down

@@ -48,8 +48,12 @@ struct TestScene {
         addTriangle(a, b, c, material);
         addTriangle(a, c, d, material);
     }
-    // Closed axis-aligned box, outward normals.
-    void addBox(glm::vec3 lo, glm::vec3 hi, int material = 0) {
+    // Closed axis-aligned box, outward normals (inward: seen from inside).
+    void addBox(glm::vec3 lo, glm::vec3 hi, int material = 0, bool inward = false) {
+        auto addQuad = [&](glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, int m) {
+            if (inward) this->addQuad(a, d, c, b, m);
+            else this->addQuad(a, b, c, d, m);
+        };
         glm::vec3 p[8];
         for (int i = 0; i < 8; ++i) p[i] = glm::vec3(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
         addQuad(p[0], p[2], p[3], p[1], material);  // -z
@@ -60,6 +64,11 @@ struct TestScene {
         addQuad(p[1], p[3], p[7], p[5], material);  // +x
     }
 };
+
+GpuScene upload(const Scene& scene) {
+    GlContext::shared();  // creates and makes current the context on first use
+    return uploadScene(scene);
+}
 
 // ---- GPU readback ----------------------------------------------------------------------
 
@@ -184,7 +193,7 @@ VoxelGrid voxelize(const Scene& scene, const GpuScene& gpu, int res, const Bound
 }
 
 void expectNoHoles(const Scene& scene, int res, const Bounds3* region = nullptr) {
-    GpuScene gpu = uploadScene(scene);
+    GpuScene gpu = upload(scene);
     VoxelGrid g = voxelize(scene, gpu, res, region);
     HoleReport r = compareWithCpu(scene, g);
     EXPECT_EQ(r.missing, 0u) << "holes";
@@ -265,7 +274,7 @@ TEST(Voxelize, TwoRunsGiveIdenticalBytes) {
         float s = i % 10 == 0 ? 1.f : 0.08f;
         t.addTriangle(c, c + randomPoint(rng, -s, s), c + randomPoint(rng, -s, s), mat(rng));
     }
-    GpuScene gpu = uploadScene(t.scene);
+    GpuScene gpu = upload(t.scene);
     std::array<std::vector<uint8_t>, 4> first;
     for (int run = 0; run < 2; ++run) {
         VoxelGrid g = voxelize(t.scene, gpu, 48);
@@ -295,7 +304,7 @@ TEST(Voxelize, AlbedoOfTwoTrianglesSharingVoxelsIsTheirMean) {
     float z0 = layout.origin.z + 15.2f * layout.voxelSize, z1 = layout.origin.z + 15.7f * layout.voxelSize;
     t.addTriangle({0.2f, 0.2f, z0}, {2.8f, 0.2f, z0}, {0.2f, 2.8f, z0}, ma);
     t.addTriangle({0.2f, 0.2f, z1}, {2.8f, 0.2f, z1}, {0.2f, 2.8f, z1}, mb);
-    GpuScene gpu = uploadScene(t.scene);
+    GpuScene gpu = upload(t.scene);
     VoxelGrid g = voxelize(t.scene, gpu, 32, &region);
     Volume albedo = readVolume(g.albedo, 0, 4);
     Volume opacity = readVolume(g.opacity, 0, 1);
@@ -323,7 +332,7 @@ TEST(Voxelize, EmissionUpToMillionStaysFinite) {
     TestScene t;
     t.addMaterial(glm::vec3(0.5f), glm::vec3(1e6f, 2.5f, 0.f));
     t.addQuad({0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0});
-    GpuScene gpu = uploadScene(t.scene);
+    GpuScene gpu = upload(t.scene);
     VoxelGrid g = voxelize(t.scene, gpu, 16);
     PassTimer timer;
     injectRadiance(g, gpu, t.scene, 0.f, ParamMap(), timer);
@@ -383,7 +392,7 @@ struct FloorResult {
 };
 
 FloorResult injectFloor(const FloorScene& f, int res) {
-    GpuScene gpu = uploadScene(f.t.scene);
+    GpuScene gpu = upload(f.t.scene);
     VoxelGrid g = voxelize(f.t.scene, gpu, res);
     PassTimer timer;
     injectRadiance(g, gpu, f.t.scene, 0.f, ParamMap(), timer);
@@ -443,9 +452,9 @@ TEST(Inject, BouncesAddBoundedEnergy) {
     TestScene t;
     int white = t.addMaterial(glm::vec3(0.9f));
     int lamp = t.addMaterial(glm::vec3(0.f), glm::vec3(1.f));
-    t.addBox({-1, -1, -1}, {1, 1, 1}, white);
+    t.addBox({-1, -1, -1}, {1, 1, 1}, white, true);
     t.addQuad({-0.3f, 0.95f, -0.3f}, {0.3f, 0.95f, -0.3f}, {0.3f, 0.95f, 0.3f}, {-0.3f, 0.95f, 0.3f}, lamp);
-    GpuScene gpu = uploadScene(t.scene);
+    GpuScene gpu = upload(t.scene);
     std::vector<double> means;
     for (int bounces : {0, 1, 2, 3}) {
         VoxelGrid g = voxelize(t.scene, gpu, 24);
@@ -484,7 +493,7 @@ TEST(Mips, SolidBlockIsOpaqueEmptyIsZeroAndMeansArePreserved) {
         glm::vec3 c = world(randomPoint(rng, 16.f, 31.f));
         t.addTriangle(c, c + randomPoint(rng, -0.1f, 0.1f), c + randomPoint(rng, -0.1f, 0.1f));
     }
-    GpuScene gpu = uploadScene(t.scene);
+    GpuScene gpu = upload(t.scene);
     VoxelGrid g = voxelize(t.scene, gpu, 32, &region);
     PassTimer timer;
     buildMips(g, false, timer);  // AO-only path: no radiance
@@ -506,7 +515,7 @@ TEST(Mips, SolidBlockIsOpaqueEmptyIsZeroAndMeansArePreserved) {
     l.position = world(glm::vec3(10.f, 20.f, 8.f));
     l.color = glm::vec3(2.f, 1.f, 0.5f);
     t.scene.lights.push_back(l);
-    GpuScene lit = uploadScene(t.scene);
+    GpuScene lit = upload(t.scene);
     VoxelGrid g2 = voxelize(t.scene, lit, 32, &region);
     injectRadiance(g2, lit, t.scene, 0.f, ParamMap(), timer);
     buildMips(g2, true, timer);
@@ -530,7 +539,7 @@ TEST(Mips, AnisotropicCompositesAlongTheAxisAndAveragesAcross) {
     t.addMaterial(glm::vec3(0.7f));
     // A plane x = 4.5 (voxel units): one voxel layer (x = 4) across y, z in 2..14.
     t.addQuad(world({4.5f, 2.f, 2.f}), world({4.5f, 14.f, 2.f}), world({4.5f, 14.f, 14.f}), world({4.5f, 2.f, 14.f}));
-    GpuScene gpu = uploadScene(t.scene);
+    GpuScene gpu = upload(t.scene);
     VoxelGrid g = voxelize(t.scene, gpu, 16, &region);
     PassTimer timer;
     buildMips(g, true, timer);  // AO-only: aniso alpha from opacity

@@ -1,0 +1,189 @@
+// The `vct render` contract as a user meets it: images, --stats, --explain, exit codes and
+// no partial output on bad input.
+#include "eval/image_io.h"
+#include "support/run_vct.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+using namespace vcttest;
+namespace fs = std::filesystem;
+
+namespace {
+
+nlohmann::json readJson(const std::string& path) {
+    std::ifstream in(path);
+    return nlohmann::json::parse(in);
+}
+
+// Mean of channel-averaged values over a rectangle given in fractions of the image.
+double regionMean(const vct::Image& img, double x0, double y0, double x1, double y1) {
+    double sum = 0;
+    int n = 0;
+    for (int y = int(y0 * img.height); y < int(y1 * img.height); ++y)
+        for (int x = int(x0 * img.width); x < int(x1 * img.width); ++x) {
+            for (int c = 0; c < std::min(3, img.channels); ++c) sum += img.at(x, y, c);
+            n += std::min(3, img.channels);
+        }
+    return sum / n;
+}
+
+}  // namespace
+
+TEST(RenderCli, CornellBoxRegionsAreDistinct) {
+    std::string dir = freshTempDir("cornell");
+    std::string exr = dir + "/cb.exr";
+    auto r = runVct("render scenes/cornell_box.gltf --size 128 --sky 0 --aov beauty,direct,emission,albedo -o " + exr);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    vct::Image img = vct::readImage(exr);
+    auto names = vct::channelNamesOf(exr);
+    ASSERT_EQ(img.channels, 12) << "beauty RGB + direct, emission, albedo RGB";
+    auto channel = [&](const std::string& name) {
+        for (size_t i = 0; i < names.size(); ++i)
+            if (names[i] == name) return int(i);
+        ADD_FAILURE() << "no channel " << name;
+        return 0;
+    };
+    const int er = channel("emission.R"), dr = channel("direct.R"), ar = channel("albedo.R"), ag = channel("albedo.G");
+    // Classify pixels by what the G-buffer says they are, then compare their radiance.
+    double emissive = 0, lit = 0, shadow = 0;
+    int nEmissive = 0, nLit = 0, nShadow = 0;
+    double redWall = 0, greenWall = 0;
+    int nRed = 0, nGreen = 0;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            float e = img.at(x, y, er), d = img.at(x, y, dr);
+            float a = img.at(x, y, ar), g = img.at(x, y, ag);
+            if (e > 0.5f) { emissive += img.at(x, y, channel("R")); ++nEmissive; continue; }
+            if (a > 0.3f && a > 3.f * g) { redWall += img.at(x, y, channel("R")); ++nRed; }
+            if (g > 0.3f && g > 2.f * a) { greenWall += img.at(x, y, channel("G")); ++nGreen; }
+            if (y > img.height * 3 / 4 && a > 0.5f && g > 0.5f) {  // white floor near the bottom
+                if (d > 0.05f) { lit += d; ++nLit; } else { shadow += d; ++nShadow; }
+            }
+        }
+    ASSERT_GT(nEmissive, 10);
+    ASSERT_GT(nLit, 100);
+    ASSERT_GT(nShadow, 20) << "the boxes cast shadows on the floor";
+    ASSERT_GT(nRed, 100);
+    ASSERT_GT(nGreen, 100);
+    EXPECT_GT(emissive / nEmissive, 2.0 * lit / nLit) << "the emissive ceiling is the brightest region";
+    EXPECT_LT(shadow / nShadow, 0.2 * lit / nLit) << "shadowed floor is much darker than lit floor";
+    EXPECT_GT(redWall / nRed, 0.05);
+    EXPECT_GT(greenWall / nGreen, 0.05);
+}
+
+TEST(RenderCli, PngIsWrittenAndStatsHaveTheContractFields) {
+    std::string dir = freshTempDir("stats");
+    auto r = runVct("render scenes/cornell_box.gltf --size 64x48 -o " + dir + "/a.png --stats " + dir + "/s.json");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    vct::Image png = vct::readImage(dir + "/a.png");
+    EXPECT_EQ(png.width, 64);
+    EXPECT_EQ(png.height, 48);
+    auto j = readJson(dir + "/s.json");
+    for (const char* key : {"passes", "total_ms", "width", "height", "gl_renderer", "cores", "passes_run",
+                            "passes_skipped", "scene"})
+        EXPECT_TRUE(j.contains(key)) << key;
+    EXPECT_EQ(j["width"], 64);
+    EXPECT_EQ(j["height"], 48);
+    EXPECT_GT(j["scene"]["triangles"].get<int>(), 10);
+    EXPECT_GE(j["scene"]["lights"].get<int>(), 1);
+    ASSERT_FALSE(j["passes"].empty());
+    for (const auto& p : j["passes"]) {
+        EXPECT_TRUE(p.contains("name"));
+        EXPECT_GE(p["wall_ms"].get<double>(), 0.0);
+        EXPECT_TRUE(p.contains("gpu_ms"));
+    }
+    for (const auto& s : j["passes_skipped"]) {
+        EXPECT_TRUE(s.contains("pass"));
+        EXPECT_FALSE(s["reason"].get<std::string>().empty());
+    }
+}
+
+TEST(RenderCli, DepthAloneRunsOnlyTheGBufferPass) {
+    std::string dir = freshTempDir("depth");
+    auto r = runVct("render scenes/cornell_box.gltf --size 32 --ao gtao --aov depth -o " + dir + "/d.exr --stats " +
+                    dir + "/s.json");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    auto j = readJson(dir + "/s.json");
+    EXPECT_EQ(j["passes_run"], nlohmann::json::array({"gbuffer"}));
+    vct::Image d = vct::readImage(dir + "/d.exr");
+    EXPECT_EQ(d.channels, 1);
+}
+
+TEST(RenderCli, ExplainPrintsRunAndSkippedPasses) {
+    std::string dir = freshTempDir("explain");
+    auto r = runVct("render scenes/cornell_box.gltf --size 32 --explain -o " + dir + "/x.png");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("passes to run:"), std::string::npos);
+    EXPECT_NE(r.output.find("passes left out:"), std::string::npos);
+    EXPECT_NE(r.output.find("voxelize: no method reads voxels"), std::string::npos) << r.output;
+}
+
+TEST(RenderCli, BadInputFailsCleanlyWithoutOutput) {
+    std::string dir = freshTempDir("bad");
+    const std::string out = dir + "/never.png";
+    struct Case { std::string args; int code; std::string says; };
+    std::ofstream(dir + "/broken.gltf") << "{ \"asset\": {\"version\": \"2.0\"}, \"meshes\": [ ";
+    const Case cases[] = {
+        {"render " + dir + "/missing.gltf -o " + out, 1, "missing.gltf"},
+        {"render " + dir + "/broken.gltf -o " + out, 1, "broken.gltf"},
+        {"render scenes/cornell_box.gltf --ao nonsense -o " + out, 2, "--ao"},
+        {"render scenes/cornell_box.gltf --gi magic -o " + out, 2, "--gi"},
+        {"render scenes/cornell_box.gltf --size 0 -o " + out, 2, "--size"},
+        {"render scenes/cornell_box.gltf --size 12xq -o " + out, 2, "--size"},
+        {"render scenes/cornell_box.gltf --radius -1 -o " + out, 2, "--radius"},
+        {"render scenes/cornell_box.gltf --eye 1,2 --target 0,0,0 -o " + out, 2, "1,2"},
+        {"render scenes/cornell_box.gltf --camera nope -o " + out, 2, "nope"},
+        {"render scenes/cornell_box.gltf --param gtao.slices=3 -o " + out, 2, "gtao.slices"},
+        {"render scenes/cornell_box.gltf --param novalue -o " + out, 2, "novalue"},
+        {"render scenes/cornell_box.gltf --aov bogus -o " + out, 2, "bogus"},
+        {"render scenes/cornell_box.gltf -o " + dir + "/x.tiff", 2, "x.tiff"},
+        {"render scenes/cornell_box.gltf --frobnicate -o " + out, 2, "frobnicate"},
+        {"render", 2, "scene"},
+    };
+    for (const auto& c : cases) {
+        auto r = runVct(c.args);
+        EXPECT_EQ(r.exitCode, c.code) << c.args << "\n" << r.output;
+        EXPECT_NE(r.output.find(c.says), std::string::npos) << c.args << "\n" << r.output;
+        EXPECT_FALSE(fs::exists(out)) << c.args;
+    }
+    // No temporary files left behind either.
+    for (const auto& e : fs::directory_iterator(dir))
+        EXPECT_TRUE(e.path().filename() == "broken.gltf") << e.path();
+}
+
+TEST(RenderCli, HelpOnEverySubcommand) {
+    for (const char* sub : {"render", "info"}) {
+        auto r = runVct(std::string(sub) + " --help");
+        EXPECT_EQ(r.exitCode, 0) << sub;
+        EXPECT_NE(r.output.find("--"), std::string::npos) << sub;
+    }
+    auto r = runVct("render --help-params");
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.output.find("gtao."), std::string::npos) << r.output;
+}
+
+TEST(RenderCli, InfoPrintsRendererAndCounts) {
+    auto r = runVct("info scenes/cornell_box.gltf");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("gl_renderer:"), std::string::npos);
+    EXPECT_NE(r.output.find("triangles:"), std::string::npos);
+}
+
+TEST(RenderCli, SponzaRendersTextured) {
+    const std::string sponza = sharedScenesDir() + "/mcguire_sponza.glb";
+    if (!fs::exists(sponza)) GTEST_SKIP() << "third-party scene not found: " << sponza << " (set VCT_SHARED_SCENES)";
+    std::string dir = freshTempDir("sponza");
+    auto r = runVct("render " + sponza + " --size 64 --eye -10,2,0 --target 10,4,0 --fov 60 --aov albedo -o " + dir +
+                    "/a.exr");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    vct::Image a = vct::readImage(dir + "/a.exr");
+    // Textured: many distinct albedo values (an untextured render has one per material).
+    std::set<int> distinct;
+    for (size_t i = 0; i < a.pixels.size(); i += 3) distinct.insert(int(a.pixels[i] * 1000.f));
+    EXPECT_GT(distinct.size(), 60u);
+}
