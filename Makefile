@@ -21,7 +21,7 @@ build: deps $(BUILD)/CMakeCache.txt
 
 render: build
 	@mkdir -p out
-	./$(BUILD)/vct render scenes/default.gltf --size 512 --ao gtao --radius 0.5 -o out/default.png --stats out/default.json
+	./$(BUILD)/vct render scenes/default.gltf --size 512 --ao gtao --radius 0.5 --exposure -1.5 -o out/default.png --stats out/default.json
 	@echo "wrote out/default.png (timings and pass plan in out/default.json)"
 
 test: build

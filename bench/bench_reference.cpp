@@ -39,9 +39,11 @@ std::string scenePath() {
     return dir + "/mcguire_sponza.glb";
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
+// Optional 8-bit PGM of a [0, 1] image for eyeballing (VCT_REFERENCE_DUMP=prefix).
+void writePgm(const std::string& path, const std::vector<float>& v, int w, int h) {
+    std::ofstream f(path, std::ios::binary);
+    f << "P5\n" << w << " " << h << "\n255\n";
+    for (float x : v) f.put(char(uint8_t(std::lround(std::clamp(x, 0.f, 1.f) * 255.f))));
 }
 
 // The occlusion rays referenceAO traces, in the same pass/point/sample order.
@@ -163,6 +165,8 @@ int main() {
             std::printf("  !! ray count differs from the generated arrays (%zu)\n", rays.size());
     }
     std::printf("(ray generation alone, 1 thread: %.3f s)\n", generateSeconds);
+    if (const char* dump = std::getenv("VCT_REFERENCE_DUMP"))
+        writePgm(std::string(dump) + "_ao.pgm", results[1].ao, 256, 256);
     {
         const ReferenceAO& ao = results[0];
         double meanA = 0;

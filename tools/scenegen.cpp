@@ -10,7 +10,8 @@
 
 int main(int argc, char** argv) {
     if (argc != 2) {
-        std::fprintf(stderr, "usage: %s OUTDIR\n  writes OUTDIR/<name>.gltf for every project scene\n", argv[0]);
+        std::fprintf(stderr, "usage: %s OUTDIR\n  writes OUTDIR/<name>.gltf for every project scene\n",
+                     argv[0]);
         return 2;
     }
     const std::filesystem::path outDir = argv[1];
@@ -20,8 +21,8 @@ int main(int argc, char** argv) {
             const std::string path = (outDir / (name + ".gltf")).string();
             vct::makeProjectScene(name).write(path);
             const vct::Scene scene = vct::loadScene(path);  // the file must load as the library built it
-            std::printf("%-24s %6zu triangles %2zu lights %zu cameras -> %s\n", name.c_str(), scene.triangleCount(),
-                        scene.lights.size(), scene.cameras.size(), path.c_str());
+            std::printf("%-24s %6zu triangles %2zu lights %zu cameras -> %s\n", name.c_str(),
+                        scene.triangleCount(), scene.lights.size(), scene.cameras.size(), path.c_str());
         }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "vct-scenegen: %s\n", e.what());

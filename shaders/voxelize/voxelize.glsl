@@ -37,7 +37,7 @@ layout(r32ui, binding = VOX_UNIT_EMISSION + 5) uniform coherent uimage3D accEmis
 #endif
 
 layout(std430, binding = VOX_BINDING_BIGLIST) buffer BigList {
-    uvec4 bigHeader;  // x = listed triangles (= indirect group count), y = z = 1
+    uvec4 bigHeader;  // x = listed triangles
     uint bigTriangles[];
 };
 
@@ -45,6 +45,7 @@ uniform vec3 uGridOrigin;     // world
 uniform float uInvVoxelSize;  // 1 / world units
 uniform ivec3 uResolution;
 uniform uint uTriangleCount;
+uniform uint uBigBase;  // big pass: first list entry of this dispatch
 
 // Half-size of the tested box in voxel units: 0.5 plus a margin well above float rounding
 // of voxel coordinates (~1e-5 at 1024^3) and well below anything visible.
@@ -213,7 +214,7 @@ void vox_column(Tri tri, int column) {
 
 void main() {
 #ifdef BIG_PASS
-    uint t = bigTriangles[gl_WorkGroupID.x];
+    uint t = bigTriangles[uBigBase + gl_WorkGroupID.x];
     Tri tri = vox_loadTriangle(t);
     int columns = vox_columnCount(tri);
     for (int c = int(gl_LocalInvocationIndex); c < columns; c += VOX_BIG_GROUP) vox_column(tri, c);

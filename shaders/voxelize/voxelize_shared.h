@@ -12,7 +12,7 @@ VCT_BEGIN_NAMESPACE
 // spanning the grid does not serialize one SIMD lane for seconds.
 VCT_CONST int VOX_TRI_GROUP = 64;
 VCT_CONST int VOX_BIG_GROUP = 64;
-VCT_CONST int VOX_SMALL_COLUMNS = 480000;
+VCT_CONST int VOX_SMALL_COLUMNS = 48;
 VCT_CONST int VOX_GRID_GROUP = 4;   // 4x4x4 for per-voxel passes (resolve, inject, mips)
 
 // Image units of the accumulators (r32ui) written by voxelize.glsl and read by resolve.glsl.
@@ -21,8 +21,8 @@ VCT_CONST int VOX_UNIT_NORMAL = 3;     // 3 images: x, y, z (two's complement su
 VCT_CONST int VOX_UNIT_WEIGHT = 6;     // 1 image: sum of weights
 VCT_CONST int VOX_UNIT_EMISSION = 7;   // 6 images: r lo, r hi, g lo, g hi, b lo, b hi
 
-// Storage binding of the big-triangle list: uvec4 header {groupsX, 1, 1, occupied voxel
-// count} (doubles as the indirect dispatch arguments), then triangle ids.
+// Storage binding of the big-triangle list: uvec4 header {listed triangles, -, -, occupied
+// voxel count}, then triangle ids.
 VCT_CONST int VOX_BINDING_BIGLIST = 6;
 
 // Fixed point. Every (triangle, voxel) contribution has an integer weight in

@@ -1,6 +1,11 @@
 #include "render/method_params.h"
 
-#include "ao/screen_space_ao.h"
+#include "ao/alchemy.h"
+#include "ao/ao_filters.h"
+#include "ao/gtao.h"
+#include "ao/hbao.h"
+#include "ao/horizon_ao.h"
+#include "ao/ssao.h"
 #include "render/params.h"
 #include "render/plan.h"
 
@@ -8,12 +13,17 @@ namespace vct {
 
 void documentAllMethodParams() {
     ParamMap empty;
-    // The planner's own keys.
+    // The planner's own keys (blur, ao.half-res) and the shadow map size.
     RenderRequest r;
     r.ao = "gtao";
     planRender(SceneFeatures{}, r);
     empty.getInt("shadow.size", 1024, 16, 8192, "shadow map texels per side");
-    for (const auto& m : screenSpaceAoMethods()) planScreenSpaceAo(m, empty);
+    readSsaoSettings(empty);
+    readHorizonSettings(empty);
+    readAlchemySettings(empty);
+    readHbaoSettings(empty);
+    readGtaoSettings(empty);
+    readAoBlurSettings(empty, true);
 }
 
 }  // namespace vct

@@ -48,12 +48,14 @@ bool parseIndex(const std::string& s, size_t* index) {
 std::string describeCameras(const Scene& scene) {
     if (scene.cameras.empty()) return "(none)";
     std::ostringstream os;
-    for (size_t i = 0; i < scene.cameras.size(); ++i) os << (i ? ", " : "") << i << " '" << scene.cameras[i].name << "'";
+    for (size_t i = 0; i < scene.cameras.size(); ++i)
+        os << (i ? ", " : "") << i << " '" << scene.cameras[i].name << "'";
     return os.str();
 }
 
 Camera defaultCamera(const Bounds3& bounds, float aspect, float yfovRadians) {
-    if (!(aspect > 0.f) || !std::isfinite(aspect)) throw std::invalid_argument("defaultCamera: aspect must be > 0");
+    if (!(aspect > 0.f) || !std::isfinite(aspect))
+        throw std::invalid_argument("defaultCamera: aspect must be > 0");
     if (!(yfovRadians > 0.f && yfovRadians < 3.1415926f))
         throw std::invalid_argument("defaultCamera: yfov must be in (0, pi)");
     glm::vec3 center;
@@ -77,7 +79,8 @@ Camera defaultCamera(const Bounds3& bounds, float aspect, float yfovRadians) {
 
 Camera resolveCamera(const Scene& scene, const CameraRequest& request, float aspect) {
     if (!(request.fovDeg > 0.f && request.fovDeg < 180.f))
-        throw std::invalid_argument("camera: fov " + std::to_string(request.fovDeg) + " degrees not in (0, 180)");
+        throw std::invalid_argument("camera: fov " + std::to_string(request.fovDeg) +
+                                    " degrees not in (0, 180)");
     if (request.hasEye) {
         if (!finite3(request.eye) || !finite3(request.target))
             throw std::invalid_argument("camera: eye or target is not finite");
@@ -99,7 +102,8 @@ Camera resolveCamera(const Scene& scene, const CameraRequest& request, float asp
         for (const Camera& c : scene.cameras)
             if (c.name == request.nameOrIndex) return c;
         size_t index = 0;
-        if (parseIndex(request.nameOrIndex, &index) && index < scene.cameras.size()) return scene.cameras[index];
+        if (parseIndex(request.nameOrIndex, &index) && index < scene.cameras.size())
+            return scene.cameras[index];
         throw std::invalid_argument("camera '" + request.nameOrIndex + "' not found in " +
                                     (scene.path.empty() ? std::string("the scene") : scene.path) +
                                     "; available cameras: " + describeCameras(scene));
@@ -116,7 +120,8 @@ glm::vec3 parseVec3(const std::string& text) {
     size_t start = 0;
     for (int k = 0; k < 3; ++k) {
         const size_t comma = text.find(',', start);
-        if ((k < 2) != (comma != std::string::npos)) throw bad("expected exactly three comma-separated numbers");
+        if ((k < 2) != (comma != std::string::npos))
+            throw bad("expected exactly three comma-separated numbers");
         const std::string part = text.substr(start, k < 2 ? comma - start : std::string::npos);
         size_t used = 0;
         double x = 0.0;
@@ -126,8 +131,10 @@ glm::vec3 parseVec3(const std::string& text) {
             throw bad("component " + std::to_string(k) + " '" + part + "' is not a number");
         }
         while (used < part.size() && std::isspace(static_cast<unsigned char>(part[used]))) ++used;
-        if (used != part.size()) throw bad("component " + std::to_string(k) + " '" + part + "' is not a number");
-        if (!std::isfinite(x) || !std::isfinite(float(x))) throw bad("component " + std::to_string(k) + " is not finite");
+        if (used != part.size())
+            throw bad("component " + std::to_string(k) + " '" + part + "' is not a number");
+        if (!std::isfinite(x) || !std::isfinite(float(x)))
+            throw bad("component " + std::to_string(k) + " is not finite");
         v[k] = float(x);
         start = comma + 1;
     }

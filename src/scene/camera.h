@@ -15,7 +15,7 @@ struct CameraRequest {
     bool hasEye = false;      // true: eye/target/fovDeg below win over everything else
     glm::vec3 eye{0.f};
     glm::vec3 target{0.f};
-    float fovDeg = 45.f;      // vertical field of view, degrees, (0, 180); also used by the default framing
+    float fovDeg = 45.f;  // vertical field of view, degrees, (0, 180); also used by the default framing
 };
 
 // Precedence: explicit eye/target/fov, then a named or indexed camera (std::invalid_argument listing

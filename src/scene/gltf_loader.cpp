@@ -51,53 +51,61 @@ std::string str3(const glm::vec3& v) {
 
 const char* modeName(int mode) {
     switch (mode) {
-    case TINYGLTF_MODE_POINTS: return "POINTS";
-    case TINYGLTF_MODE_LINE: return "LINES";
-    case TINYGLTF_MODE_LINE_LOOP: return "LINE_LOOP";
-    case TINYGLTF_MODE_LINE_STRIP: return "LINE_STRIP";
-    case TINYGLTF_MODE_TRIANGLES: return "TRIANGLES";
-    case TINYGLTF_MODE_TRIANGLE_STRIP: return "TRIANGLE_STRIP";
-    case TINYGLTF_MODE_TRIANGLE_FAN: return "TRIANGLE_FAN";
-    default: return "unknown";
+        case TINYGLTF_MODE_POINTS: return "POINTS";
+        case TINYGLTF_MODE_LINE: return "LINES";
+        case TINYGLTF_MODE_LINE_LOOP: return "LINE_LOOP";
+        case TINYGLTF_MODE_LINE_STRIP: return "LINE_STRIP";
+        case TINYGLTF_MODE_TRIANGLES: return "TRIANGLES";
+        case TINYGLTF_MODE_TRIANGLE_STRIP: return "TRIANGLE_STRIP";
+        case TINYGLTF_MODE_TRIANGLE_FAN: return "TRIANGLE_FAN";
+        default: return "unknown";
     }
 }
 
 // One component as a double; normalized integers map to [0,1] / [-1,1] (glTF 2.0, 3.11).
 double readComponent(const unsigned char* p, int componentType, bool normalized) {
     switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE: {
-        int8_t v; std::memcpy(&v, p, 1);
-        return normalized ? std::max(v / 127.0, -1.0) : v;
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
-        uint8_t v; std::memcpy(&v, p, 1);
-        return normalized ? v / 255.0 : v;
-    }
-    case TINYGLTF_COMPONENT_TYPE_SHORT: {
-        int16_t v; std::memcpy(&v, p, 2);
-        return normalized ? std::max(v / 32767.0, -1.0) : v;
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-        uint16_t v; std::memcpy(&v, p, 2);
-        return normalized ? v / 65535.0 : v;
-    }
-    case TINYGLTF_COMPONENT_TYPE_INT: {
-        int32_t v; std::memcpy(&v, p, 4);
-        return v;
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
-        uint32_t v; std::memcpy(&v, p, 4);
-        return v;
-    }
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: {
-        float v; std::memcpy(&v, p, 4);
-        return v;
-    }
-    case TINYGLTF_COMPONENT_TYPE_DOUBLE: {
-        double v; std::memcpy(&v, p, 8);
-        return v;
-    }
-    default: return 0.0;
+        case TINYGLTF_COMPONENT_TYPE_BYTE: {
+            int8_t v;
+            std::memcpy(&v, p, 1);
+            return normalized ? std::max(v / 127.0, -1.0) : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
+            uint8_t v;
+            std::memcpy(&v, p, 1);
+            return normalized ? v / 255.0 : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_SHORT: {
+            int16_t v;
+            std::memcpy(&v, p, 2);
+            return normalized ? std::max(v / 32767.0, -1.0) : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+            uint16_t v;
+            std::memcpy(&v, p, 2);
+            return normalized ? v / 65535.0 : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_INT: {
+            int32_t v;
+            std::memcpy(&v, p, 4);
+            return v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+            uint32_t v;
+            std::memcpy(&v, p, 4);
+            return v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+            float v;
+            std::memcpy(&v, p, 4);
+            return v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_DOUBLE: {
+            double v;
+            std::memcpy(&v, p, 8);
+            return v;
+        }
+        default: return 0.0;
     }
 }
 
@@ -118,7 +126,8 @@ std::vector<uint8_t> rgba8FromImage(const tinygltf::Image& image) {
     for (size_t i = 0; i < texels; ++i) {
         uint8_t c[4] = {0, 0, 0, 255};
         for (int k = 0; k < comps; ++k) {
-            const unsigned char* p = image.image.data() + (i * size_t(comps) + size_t(k)) * size_t(bytesPerComp);
+            const unsigned char* p =
+                image.image.data() + (i * size_t(comps) + size_t(k)) * size_t(bytesPerComp);
             uint32_t v = p[0];
             if (bytesPerComp == 2) {
                 uint16_t v16;
@@ -132,7 +141,10 @@ std::vector<uint8_t> rgba8FromImage(const tinygltf::Image& image) {
             o[0] = o[1] = o[2] = c[0];
             o[3] = comps == 2 ? c[1] : 255;
         } else {
-            o[0] = c[0]; o[1] = c[1]; o[2] = c[2]; o[3] = comps == 4 ? c[3] : 255;
+            o[0] = c[0];
+            o[1] = c[1];
+            o[2] = c[2];
+            o[3] = comps == 4 ? c[3] : 255;
         }
     }
     return rgba;
@@ -148,7 +160,8 @@ glm::mat4 localFromNode(const tinygltf::Node& node) {
     if (node.translation.size() == 3) t = glm::make_vec3(node.translation.data());
     if (node.scale.size() == 3) s = glm::make_vec3(node.scale.data());
     if (node.rotation.size() == 4)
-        r = glm::normalize(glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]));
+        r = glm::normalize(
+            glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]));
     glm::dmat4 m = glm::translate(glm::dmat4(1.0), t) * glm::mat4_cast(r) * glm::scale(glm::dmat4(1.0), s);
     return glm::mat4(m);
 }
@@ -167,7 +180,7 @@ struct Loader {
     const tinygltf::Model& model;
     std::string path;
     Scene scene;
-    std::vector<int> sceneTextureFromGltf;  // -1 = not converted yet
+    std::vector<int> sceneTextureFromGltf;                             // -1 = not converted yet
     std::map<std::tuple<int, bool, bool>, int> sceneTextureFromImage;  // (image, repeatS, repeatT) -> texture
     int defaultMaterial = -1;
     size_t degenerateCount = 0;
@@ -193,7 +206,8 @@ struct Loader {
                  std::to_string(components));
         const int componentSize = tinygltf::GetComponentSizeInBytes(uint32_t(acc.componentType));
         if (componentSize <= 0) fail(where + ": unknown component type " + std::to_string(acc.componentType));
-        if (acc.count > (size_t(1) << 31)) fail(where + ": count " + std::to_string(acc.count) + " is too large");
+        if (acc.count > (size_t(1) << 31))
+            fail(where + ": count " + std::to_string(acc.count) + " is too large");
         if (componentTypeOut) *componentTypeOut = acc.componentType;
         *countOut = acc.count;
 
@@ -210,44 +224,48 @@ struct Loader {
             if (acc.count > 0) {
                 const size_t end = acc.byteOffset + size_t(stride) * (acc.count - 1) + elementSize;
                 if (end > byteLength)
-                    fail(where + ": needs bytes [" + std::to_string(acc.byteOffset) + ", " + std::to_string(end) +
-                         ") of buffer view " + std::to_string(acc.bufferView) + ", which has " +
-                         std::to_string(byteLength) + " bytes");
+                    fail(where + ": needs bytes [" + std::to_string(acc.byteOffset) + ", " +
+                         std::to_string(end) + ") of buffer view " + std::to_string(acc.bufferView) +
+                         ", which has " + std::to_string(byteLength) + " bytes");
             }
             for (size_t i = 0; i < acc.count; ++i) {
                 const unsigned char* e = data + acc.byteOffset + i * size_t(stride);
                 for (int c = 0; c < components; ++c)
-                    out[i * size_t(components) + size_t(c)] =
-                        readComponent(e + size_t(c) * size_t(componentSize), acc.componentType, acc.normalized);
+                    out[i * size_t(components) + size_t(c)] = readComponent(
+                        e + size_t(c) * size_t(componentSize), acc.componentType, acc.normalized);
             }
         }
         if (acc.sparse.isSparse) applySparse(acc, where, components, componentSize, out);
         return out;
     }
 
-    void applySparse(const tinygltf::Accessor& acc, const std::string& where, int components, int componentSize,
-                     std::vector<double>& out) const {
+    void applySparse(const tinygltf::Accessor& acc, const std::string& where, int components,
+                     int componentSize, std::vector<double>& out) const {
         const size_t count = size_t(std::max(acc.sparse.count, 0));
         const int indexSize = tinygltf::GetComponentSizeInBytes(uint32_t(acc.sparse.indices.componentType));
         if (indexSize <= 0 || !isIntegerComponent(acc.sparse.indices.componentType))
             fail(where + ": sparse indices have an invalid component type");
         size_t indexBytes = 0, valueBytes = 0;
-        const unsigned char* indices = bufferViewData(acc.sparse.indices.bufferView, where + " sparse indices", &indexBytes);
-        const unsigned char* values = bufferViewData(acc.sparse.values.bufferView, where + " sparse values", &valueBytes);
+        const unsigned char* indices =
+            bufferViewData(acc.sparse.indices.bufferView, where + " sparse indices", &indexBytes);
+        const unsigned char* values =
+            bufferViewData(acc.sparse.values.bufferView, where + " sparse values", &valueBytes);
         const size_t elementSize = size_t(componentSize) * size_t(components);
         if (size_t(acc.sparse.indices.byteOffset) + count * size_t(indexSize) > indexBytes ||
             size_t(acc.sparse.values.byteOffset) + count * elementSize > valueBytes)
             fail(where + ": sparse data exceed their buffer views");
         for (size_t k = 0; k < count; ++k) {
-            const double i = readComponent(indices + size_t(acc.sparse.indices.byteOffset) + k * size_t(indexSize),
-                                           acc.sparse.indices.componentType, false);
+            const double i =
+                readComponent(indices + size_t(acc.sparse.indices.byteOffset) + k * size_t(indexSize),
+                              acc.sparse.indices.componentType, false);
             if (i < 0 || i >= double(acc.count))
                 fail(where + ": sparse index " + std::to_string(size_t(i)) + " out of range [0, " +
                      std::to_string(acc.count) + ")");
             for (int c = 0; c < components; ++c)
-                out[size_t(i) * size_t(components) + size_t(c)] = readComponent(
-                    values + size_t(acc.sparse.values.byteOffset) + k * elementSize + size_t(c) * size_t(componentSize),
-                    acc.componentType, acc.normalized);
+                out[size_t(i) * size_t(components) + size_t(c)] =
+                    readComponent(values + size_t(acc.sparse.values.byteOffset) + k * elementSize +
+                                      size_t(c) * size_t(componentSize),
+                                  acc.componentType, acc.normalized);
         }
     }
 
@@ -264,9 +282,9 @@ struct Loader {
                  " out of range [0, " + std::to_string(bufferCount) + ")");
         const tinygltf::Buffer& buffer = model.buffers[size_t(bv.buffer)];
         if (bv.byteOffset + bv.byteLength > buffer.data.size())
-            fail("buffer view " + std::to_string(viewIndex) + ": bytes [" + std::to_string(bv.byteOffset) + ", " +
-                 std::to_string(bv.byteOffset + bv.byteLength) + ") exceed buffer " + std::to_string(bv.buffer) +
-                 " of " + std::to_string(buffer.data.size()) + " bytes");
+            fail("buffer view " + std::to_string(viewIndex) + ": bytes [" + std::to_string(bv.byteOffset) +
+                 ", " + std::to_string(bv.byteOffset + bv.byteLength) + ") exceed buffer " +
+                 std::to_string(bv.buffer) + " of " + std::to_string(buffer.data.size()) + " bytes");
         *byteLength = bv.byteLength;
         return buffer.data.data() + bv.byteOffset;
     }
@@ -288,7 +306,8 @@ struct Loader {
     int textureFor(int gltfTexture, const std::string& ctx) {
         const int count = int(model.textures.size());
         if (gltfTexture < 0 || gltfTexture >= count)
-            fail(ctx + ": texture " + std::to_string(gltfTexture) + " out of range [0, " + std::to_string(count) + ")");
+            fail(ctx + ": texture " + std::to_string(gltfTexture) + " out of range [0, " +
+                 std::to_string(count) + ")");
         if (sceneTextureFromGltf.empty()) sceneTextureFromGltf.assign(size_t(count), -1);
         int& mapped = sceneTextureFromGltf[size_t(gltfTexture)];
         if (mapped >= 0) return mapped;
@@ -310,12 +329,15 @@ struct Loader {
         if (shared != sceneTextureFromImage.end()) return mapped = shared->second;
         const int imageCount = int(model.images.size());
         if (tex.source < 0 || tex.source >= imageCount)
-            fail(where + ": image " + std::to_string(tex.source) + " out of range [0, " + std::to_string(imageCount) + ")");
+            fail(where + ": image " + std::to_string(tex.source) + " out of range [0, " +
+                 std::to_string(imageCount) + ")");
         const tinygltf::Image& image = model.images[size_t(tex.source)];
-        const std::string imageWhere = label("image", tex.source, image.name.empty() ? image.uri : image.name);
+        const std::string imageWhere =
+            label("image", tex.source, image.name.empty() ? image.uri : image.name);
         const int comps = image.component;
         const int bytesPerComp = image.bits == 16 ? 2 : 1;
-        if (image.width <= 0 || image.height <= 0 || comps < 1 || comps > 4 || (image.bits != 8 && image.bits != 16) ||
+        if (image.width <= 0 || image.height <= 0 || comps < 1 || comps > 4 ||
+            (image.bits != 8 && image.bits != 16) ||
             image.image.size() < size_t(image.width) * size_t(image.height) * size_t(comps * bytesPerComp))
             fail(imageWhere + ": not decoded (missing file or unsupported format)");
 
@@ -339,7 +361,8 @@ struct Loader {
             Material out;
             out.name = m.name.empty() ? "material" + std::to_string(i) : m.name;
             const std::vector<double>& bc = m.pbrMetallicRoughness.baseColorFactor;
-            if (bc.size() == 4) out.baseColorFactor = glm::vec4(float(bc[0]), float(bc[1]), float(bc[2]), float(bc[3]));
+            if (bc.size() == 4)
+                out.baseColorFactor = glm::vec4(float(bc[0]), float(bc[1]), float(bc[2]), float(bc[3]));
             if (m.emissiveFactor.size() == 3)
                 out.emissiveFactor = glm::vec3(float(m.emissiveFactor[0]), float(m.emissiveFactor[1]),
                                                float(m.emissiveFactor[2]));
@@ -353,7 +376,8 @@ struct Loader {
             if (glm::any(glm::lessThan(out.emissiveFactor, glm::vec3(0.f))))
                 fail(where + ": negative emissive factor " + str3(out.emissiveFactor));
             if (m.pbrMetallicRoughness.baseColorTexture.index >= 0)
-                out.baseColorTexture = textureFor(m.pbrMetallicRoughness.baseColorTexture.index, where + " base colour");
+                out.baseColorTexture =
+                    textureFor(m.pbrMetallicRoughness.baseColorTexture.index, where + " base colour");
             if (m.emissiveTexture.index >= 0)
                 out.emissiveTexture = textureFor(m.emissiveTexture.index, where + " emissive");
             out.doubleSided = m.doubleSided;
@@ -385,7 +409,8 @@ struct Loader {
         if (prim.indices >= 0) {
             size_t count = 0;
             int componentType = 0;
-            std::vector<double> raw = readAccessor(prim.indices, ctx + ", indices", 1, &count, &componentType);
+            std::vector<double> raw =
+                readAccessor(prim.indices, ctx + ", indices", 1, &count, &componentType);
             const std::string where = "accessor " + std::to_string(prim.indices) + " (" + ctx + ", indices)";
             if (!isIntegerComponent(componentType)) fail(where + ": index components are not integers");
             idx.resize(count);
@@ -424,10 +449,12 @@ struct Loader {
     void addPrimitive(int meshIndex, int primIndex, const glm::mat4& worldFromLocal, bool offscreen) {
         const tinygltf::Mesh& mesh = model.meshes[size_t(meshIndex)];
         const tinygltf::Primitive& prim = mesh.primitives[size_t(primIndex)];
-        const std::string ctx = (mesh.name.empty() ? "mesh " + std::to_string(meshIndex) : "mesh '" + mesh.name + "'") +
-                                ", primitive " + std::to_string(primIndex);
+        const std::string ctx =
+            (mesh.name.empty() ? "mesh " + std::to_string(meshIndex) : "mesh '" + mesh.name + "'") +
+            ", primitive " + std::to_string(primIndex);
         const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
-        if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN)
+        if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+            mode != TINYGLTF_MODE_TRIANGLE_FAN)
             fail(ctx + ": mode " + std::to_string(mode) + " (" + modeName(mode) +
                  ") is not supported; only TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN are");
         auto attr = [&](const char* name) {
@@ -442,7 +469,8 @@ struct Loader {
             normals = readVec3(attr("NORMAL"), ctx + ", NORMAL");
             if (normals.size() != positions.size())
                 fail("accessor " + std::to_string(attr("NORMAL")) + " (" + ctx + ", NORMAL): count " +
-                     std::to_string(normals.size()) + " differs from POSITION count " + std::to_string(positions.size()));
+                     std::to_string(normals.size()) + " differs from POSITION count " +
+                     std::to_string(positions.size()));
         }
         std::vector<glm::vec2> uvs(positions.size(), glm::vec2(0.f));
         if (attr("TEXCOORD_0") >= 0) {
@@ -450,12 +478,13 @@ struct Loader {
             std::vector<double> raw = readAccessor(attr("TEXCOORD_0"), ctx + ", TEXCOORD_0", 2, &count);
             if (count != positions.size())
                 fail("accessor " + std::to_string(attr("TEXCOORD_0")) + " (" + ctx + ", TEXCOORD_0): count " +
-                     std::to_string(count) + " differs from POSITION count " + std::to_string(positions.size()));
+                     std::to_string(count) + " differs from POSITION count " +
+                     std::to_string(positions.size()));
             for (size_t i = 0; i < count; ++i) {
                 uvs[i] = glm::vec2(float(raw[2 * i]), float(raw[2 * i + 1]));
                 if (!std::isfinite(uvs[i].x) || !std::isfinite(uvs[i].y))
-                    fail("accessor " + std::to_string(attr("TEXCOORD_0")) + " (" + ctx + ", TEXCOORD_0): element " +
-                         std::to_string(i) + " is not finite");
+                    fail("accessor " + std::to_string(attr("TEXCOORD_0")) + " (" + ctx +
+                         ", TEXCOORD_0): element " + std::to_string(i) + " is not finite");
             }
         }
         const uint32_t material = materialFor(prim.material, ctx);
@@ -468,7 +497,8 @@ struct Loader {
         for (size_t i = 0; i < positions.size(); ++i) {
             world[i] = glm::vec3(worldFromLocal * glm::vec4(positions[i], 1.f));
             if (!finite3(world[i]))
-                fail(ctx + ": vertex " + std::to_string(i) + " is not finite in world space " + str3(world[i]));
+                fail(ctx + ": vertex " + std::to_string(i) + " is not finite in world space " +
+                     str3(world[i]));
         }
         auto emitTriangle = [&](const glm::uvec3& t) {
             scene.triangles.push_back(t);
@@ -481,7 +511,10 @@ struct Loader {
             for (glm::uvec3 t : tris) {
                 if (mirrored) std::swap(t.y, t.z);
                 const glm::vec3 a = world[t.x], b = world[t.y], c = world[t.z];
-                if (degenerate(a, b, c)) { ++degenerateCount; continue; }
+                if (degenerate(a, b, c)) {
+                    ++degenerateCount;
+                    continue;
+                }
                 const glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
                 const uint32_t base = uint32_t(scene.positions.size());
                 for (uint32_t k = 0; k < 3; ++k) {
@@ -513,7 +546,10 @@ struct Loader {
         for (glm::uvec3 t : tris) {
             if (mirrored) std::swap(t.y, t.z);
             const glm::vec3 a = world[t.x], b = world[t.y], c = world[t.z];
-            if (degenerate(a, b, c)) { ++degenerateCount; continue; }
+            if (degenerate(a, b, c)) {
+                ++degenerateCount;
+                continue;
+            }
             emitTriangle(t + glm::uvec3(base));
             if (needsRepair[t.x] | needsRepair[t.y] | needsRepair[t.z]) {
                 anyRepair = true;
@@ -544,11 +580,16 @@ struct Loader {
         const tinygltf::Light& l = model.lights[size_t(index)];
         const std::string where = label("light", index, l.name) + " (" + nodeWhere + ")";
         Light out;
-        out.name = l.name.empty() ? (node.name.empty() ? "light" + std::to_string(index) : node.name) : l.name;
-        if (l.type == "directional") out.type = LightType::Directional;
-        else if (l.type == "point") out.type = LightType::Point;
-        else if (l.type == "spot") out.type = LightType::Spot;
-        else fail(where + ": unknown type '" + l.type + "'");
+        out.name =
+            l.name.empty() ? (node.name.empty() ? "light" + std::to_string(index) : node.name) : l.name;
+        if (l.type == "directional")
+            out.type = LightType::Directional;
+        else if (l.type == "point")
+            out.type = LightType::Point;
+        else if (l.type == "spot")
+            out.type = LightType::Spot;
+        else
+            fail(where + ": unknown type '" + l.type + "'");
         glm::vec3 color(1.f);
         if (l.color.size() == 3) color = glm::vec3(float(l.color[0]), float(l.color[1]), float(l.color[2]));
         out.color = color * float(l.intensity);
@@ -557,16 +598,17 @@ struct Loader {
         out.outerConeAngle = float(l.spot.outerConeAngle);
         out.position = glm::vec3(worldFromLocal * glm::vec4(0.f, 0.f, 0.f, 1.f));
         const glm::vec3 dir = glm::mat3(worldFromLocal) * glm::vec3(0.f, 0.f, -1.f);
-        if (!finite3(color) || !std::isfinite(l.intensity) || !finite3(out.color) || !std::isfinite(out.range) ||
-            !std::isfinite(out.innerConeAngle) || !std::isfinite(out.outerConeAngle) || !finite3(out.position) ||
-            !finite3(dir))
+        if (!finite3(color) || !std::isfinite(l.intensity) || !finite3(out.color) ||
+            !std::isfinite(out.range) || !std::isfinite(out.innerConeAngle) ||
+            !std::isfinite(out.outerConeAngle) || !finite3(out.position) || !finite3(dir))
             fail(where + ": colour, intensity, range, cone angles or transform not finite");
         if (l.intensity < 0 || glm::any(glm::lessThan(color, glm::vec3(0.f))) || out.range < 0.f)
             fail(where + ": negative colour, intensity or range");
         if (glm::length(dir) <= 0.f) fail(where + ": node transform collapses the light direction");
         out.direction = glm::normalize(dir);
         if (out.type == LightType::Spot &&
-            !(out.innerConeAngle >= 0.f && out.innerConeAngle <= out.outerConeAngle && out.outerConeAngle <= 1.5707964f))
+            !(out.innerConeAngle >= 0.f && out.innerConeAngle <= out.outerConeAngle &&
+              out.outerConeAngle <= 1.5707964f))
             fail(where + ": spot cone angles must satisfy 0 <= inner <= outer <= pi/2");
         scene.lights.push_back(out);
     }
@@ -579,15 +621,19 @@ struct Loader {
         const tinygltf::Camera& c = model.cameras[size_t(node.camera)];
         const std::string where = label("camera", node.camera, c.name) + " (" + nodeWhere + ")";
         if (c.type != "perspective") {
-            scene.warnings.push_back(where + ": " + c.type + " camera skipped (only perspective is supported)");
+            scene.warnings.push_back(where + ": " + c.type +
+                                     " camera skipped (only perspective is supported)");
             return;
         }
         Camera out;
-        out.name = !c.name.empty() ? c.name : !node.name.empty() ? node.name : "camera" + std::to_string(node.camera);
+        out.name = !c.name.empty()      ? c.name
+                   : !node.name.empty() ? node.name
+                                        : "camera" + std::to_string(node.camera);
         const tinygltf::PerspectiveCamera& p = c.perspective;
         if (!std::isfinite(p.yfov) || !(p.yfov > 0.0) || !(p.yfov < M_PI))
             fail(where + ": yfov " + std::to_string(p.yfov) + " not in (0, pi)");
-        if (!std::isfinite(p.znear) || !(p.znear > 0.0)) fail(where + ": znear " + std::to_string(p.znear) + " not > 0");
+        if (!std::isfinite(p.znear) || !(p.znear > 0.0))
+            fail(where + ": znear " + std::to_string(p.znear) + " not > 0");
         if (!std::isfinite(p.zfar) || (p.zfar != 0.0 && !(p.zfar > p.znear)))
             fail(where + ": zfar " + std::to_string(p.zfar) + " must be 0 (infinite) or > znear");
         out.yfov = float(p.yfov);
@@ -597,7 +643,8 @@ struct Loader {
         out.eye = glm::vec3(worldFromLocal * glm::vec4(0.f, 0.f, 0.f, 1.f));
         glm::vec3 forward = linear * glm::vec3(0.f, 0.f, -1.f);
         glm::vec3 up = linear * glm::vec3(0.f, 1.f, 0.f);
-        if (!finite3(out.eye) || !finite3(forward) || !finite3(up)) fail(where + ": node transform is not finite");
+        if (!finite3(out.eye) || !finite3(forward) || !finite3(up))
+            fail(where + ": node transform is not finite");
         if (!(glm::length(forward) > 0.f)) fail(where + ": node transform collapses the view direction");
         forward = glm::normalize(forward);
         up -= glm::dot(up, forward) * forward;  // re-orthogonalize under shear or non-uniform scale
@@ -611,12 +658,17 @@ struct Loader {
     void visitNode(int nodeIndex, const glm::mat4& worldFromParent, bool parentOffscreen, size_t depth) {
         const int nodeCount = int(model.nodes.size());
         if (nodeIndex < 0 || nodeIndex >= nodeCount)
-            fail("node " + std::to_string(nodeIndex) + " out of range [0, " + std::to_string(nodeCount) + ")");
-        if (depth > model.nodes.size()) fail(label("node", nodeIndex, model.nodes[size_t(nodeIndex)].name) + ": cycle in the node hierarchy");
+            fail("node " + std::to_string(nodeIndex) + " out of range [0, " + std::to_string(nodeCount) +
+                 ")");
+        if (depth > model.nodes.size())
+            fail(label("node", nodeIndex, model.nodes[size_t(nodeIndex)].name) +
+                 ": cycle in the node hierarchy");
         const tinygltf::Node& node = model.nodes[size_t(nodeIndex)];
         const std::string where = label("node", nodeIndex, node.name);
-        if ((!node.matrix.empty() && node.matrix.size() != 16) || (!node.rotation.empty() && node.rotation.size() != 4) ||
-            (!node.scale.empty() && node.scale.size() != 3) || (!node.translation.empty() && node.translation.size() != 3))
+        if ((!node.matrix.empty() && node.matrix.size() != 16) ||
+            (!node.rotation.empty() && node.rotation.size() != 4) ||
+            (!node.scale.empty() && node.scale.size() != 3) ||
+            (!node.translation.empty() && node.translation.size() != 3))
             fail(where + ": malformed matrix/translation/rotation/scale");
         for (const std::vector<double>* v : {&node.matrix, &node.rotation, &node.scale, &node.translation})
             for (double x : *v)
@@ -629,7 +681,8 @@ struct Loader {
                 fail(where + ": mesh " + std::to_string(node.mesh) + " out of range [0, " +
                      std::to_string(model.meshes.size()) + ")");
             const tinygltf::Mesh& mesh = model.meshes[size_t(node.mesh)];
-            for (size_t p = 0; p < mesh.primitives.size(); ++p) addPrimitive(node.mesh, int(p), worldFromLocal, offscreen);
+            for (size_t p = 0; p < mesh.primitives.size(); ++p)
+                addPrimitive(node.mesh, int(p), worldFromLocal, offscreen);
         }
         addLight(node, nodeIndex, worldFromLocal);
         if (node.camera >= 0) addCamera(node, nodeIndex, worldFromLocal);
@@ -638,7 +691,9 @@ struct Loader {
 
     std::vector<int> rootNodes() const {
         if (!model.scenes.empty()) {
-            const int s = model.defaultScene >= 0 && model.defaultScene < int(model.scenes.size()) ? model.defaultScene : 0;
+            const int s = model.defaultScene >= 0 && model.defaultScene < int(model.scenes.size())
+                              ? model.defaultScene
+                              : 0;
             return model.scenes[size_t(s)].nodes;
         }
         std::vector<uint8_t> isChild(model.nodes.size(), 0);
@@ -661,14 +716,16 @@ struct Loader {
             scene.warnings.push_back("replaced " + std::to_string(repairedNormalCount) +
                                      " zero-length normals by area-weighted face normals");
         if (scene.triangles.empty())
-            fail("no triangles" + (degenerateCount ? " (all " + std::to_string(degenerateCount) + " were degenerate)"
-                                                   : std::string()));
+            fail("no triangles" + (degenerateCount
+                                       ? " (all " + std::to_string(degenerateCount) + " were degenerate)"
+                                       : std::string()));
         for (const glm::uvec3& t : scene.triangles)
             for (int k = 0; k < 3; ++k) scene.bounds.expand(scene.positions[t[k]]);
         // A glTF zfar of 0 means an infinite far plane: give those cameras one that holds the scene.
         for (size_t i : camerasWithInfiniteFar) {
             Camera& c = scene.cameras[i];
-            const float reach = glm::length(glm::abs(c.eye - scene.bounds.center()) + 0.5f * scene.bounds.extent());
+            const float reach =
+                glm::length(glm::abs(c.eye - scene.bounds.center()) + 0.5f * scene.bounds.extent());
             c.zfar = std::max(2.f * reach, 1000.f * c.znear);
         }
         return std::move(scene);
@@ -683,7 +740,8 @@ Scene sceneFromModel(const tinygltf::Model& model, const std::string& pathForMes
 
 Scene loadScene(const std::string& path) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) throw SceneError(path + ": file does not exist or is not a file");
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw SceneError(path + ": file does not exist or is not a file");
     char magic[4] = {0, 0, 0, 0};
     {
         std::ifstream in(path, std::ios::binary);

@@ -16,8 +16,9 @@ namespace {
 std::vector<double> toDoubles(const float* p, int n) { return std::vector<double>(p, p + n); }
 
 // Appends the parallelogram corner, +u, +u+v, +v (front face along cross(u, v)).
-void appendQuad(std::vector<glm::vec3>& positions, std::vector<glm::vec3>& normals, std::vector<uint32_t>& indices,
-                const glm::vec3& corner, const glm::vec3& u, const glm::vec3& v) {
+void appendQuad(std::vector<glm::vec3>& positions, std::vector<glm::vec3>& normals,
+                std::vector<uint32_t>& indices, const glm::vec3& corner, const glm::vec3& u,
+                const glm::vec3& v) {
     const uint32_t base = uint32_t(positions.size());
     const glm::vec3 n = glm::normalize(glm::cross(u, v));
     for (const glm::vec3& p : {corner, corner + u, corner + u + v, corner + v}) {
@@ -28,8 +29,8 @@ void appendQuad(std::vector<glm::vec3>& positions, std::vector<glm::vec3>& norma
 }
 
 // The 24-vertex box [-h, h] with outward normals.
-void appendBox(std::vector<glm::vec3>& positions, std::vector<glm::vec3>& normals, std::vector<uint32_t>& indices,
-               const glm::vec3& h) {
+void appendBox(std::vector<glm::vec3>& positions, std::vector<glm::vec3>& normals,
+               std::vector<uint32_t>& indices, const glm::vec3& h) {
     for (int axis = 0; axis < 3; ++axis) {
         glm::vec3 u(0.f), v(0.f), n(0.f);
         u[(axis + 1) % 3] = 2.f * h[(axis + 1) % 3];
@@ -38,8 +39,10 @@ void appendBox(std::vector<glm::vec3>& positions, std::vector<glm::vec3>& normal
             n = glm::vec3(0.f);
             n[axis] = s * h[axis];
             const glm::vec3 corner = n - 0.5f * u - 0.5f * v;
-            if (s > 0.f) appendQuad(positions, normals, indices, corner, u, v);
-            else appendQuad(positions, normals, indices, corner, v, u);
+            if (s > 0.f)
+                appendQuad(positions, normals, indices, corner, u, v);
+            else
+                appendQuad(positions, normals, indices, corner, v, u);
         }
     }
 }
@@ -92,8 +95,8 @@ int SceneBuilder::addMaterial(const std::string& name, const glm::vec3& baseColo
         tinygltf::Value::Object ext;
         ext["emissiveStrength"] = tinygltf::Value(double(peak));
         m.extensions["KHR_materials_emissive_strength"] = tinygltf::Value(ext);
-        if (std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(), "KHR_materials_emissive_strength") ==
-            model.extensionsUsed.end())
+        if (std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(),
+                      "KHR_materials_emissive_strength") == model.extensionsUsed.end())
             model.extensionsUsed.push_back("KHR_materials_emissive_strength");
     } else {
         m.emissiveFactor = {emissive.r, emissive.g, emissive.b};
@@ -103,22 +106,27 @@ int SceneBuilder::addMaterial(const std::string& name, const glm::vec3& baseColo
 }
 
 int SceneBuilder::addMesh(const std::string& name, const std::vector<glm::vec3>& positions,
-                          const std::vector<glm::vec3>& normals, const std::vector<uint32_t>& indices, int material,
-                          int mode) {
+                          const std::vector<glm::vec3>& normals, const std::vector<uint32_t>& indices,
+                          int material, int mode) {
     if (positions.empty()) throw std::invalid_argument("SceneBuilder::addMesh '" + name + "': no positions");
     if (!normals.empty() && normals.size() != positions.size())
-        throw std::invalid_argument("SceneBuilder::addMesh '" + name + "': normal and position counts differ");
+        throw std::invalid_argument("SceneBuilder::addMesh '" + name +
+                                    "': normal and position counts differ");
     tinygltf::Primitive prim;
     prim.material = material;
     prim.mode = mode;
 
     tinygltf::Accessor pos;
-    pos.bufferView = addBufferView(positions.data(), positions.size() * sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
+    pos.bufferView =
+        addBufferView(positions.data(), positions.size() * sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
     pos.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
     pos.type = TINYGLTF_TYPE_VEC3;
     pos.count = positions.size();
     glm::vec3 lo(positions[0]), hi(positions[0]);  // min/max are required for POSITION
-    for (const glm::vec3& p : positions) { lo = glm::min(lo, p); hi = glm::max(hi, p); }
+    for (const glm::vec3& p : positions) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
     pos.minValues = toDoubles(&lo.x, 3);
     pos.maxValues = toDoubles(&hi.x, 3);
     model.accessors.push_back(pos);
@@ -126,7 +134,8 @@ int SceneBuilder::addMesh(const std::string& name, const std::vector<glm::vec3>&
 
     if (!normals.empty()) {
         tinygltf::Accessor nrm;
-        nrm.bufferView = addBufferView(normals.data(), normals.size() * sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
+        nrm.bufferView =
+            addBufferView(normals.data(), normals.size() * sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
         nrm.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
         nrm.type = TINYGLTF_TYPE_VEC3;
         nrm.count = normals.size();
@@ -142,7 +151,8 @@ int SceneBuilder::addMesh(const std::string& name, const std::vector<glm::vec3>&
                                            TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
             idx.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
         } else {
-            idx.bufferView = addBufferView(indices.data(), indices.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+            idx.bufferView =
+                addBufferView(indices.data(), indices.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
             idx.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
         }
         idx.type = TINYGLTF_TYPE_SCALAR;
@@ -163,7 +173,8 @@ void SceneBuilder::attach(int node, int parent) {
         return;
     }
     if (parent >= int(model.nodes.size()))
-        throw std::invalid_argument("SceneBuilder: parent node " + std::to_string(parent) + " does not exist");
+        throw std::invalid_argument("SceneBuilder: parent node " + std::to_string(parent) +
+                                    " does not exist");
     model.nodes[size_t(parent)].children.push_back(node);
 }
 
@@ -181,7 +192,8 @@ int SceneBuilder::addNode(const std::string& name, int mesh, const NodeTransform
     return index;
 }
 
-int SceneBuilder::addNodeMatrix(const std::string& name, const glm::mat4& parentFromNode, int mesh, int parent) {
+int SceneBuilder::addNodeMatrix(const std::string& name, const glm::mat4& parentFromNode, int mesh,
+                                int parent) {
     tinygltf::Node node;
     node.name = name;
     node.mesh = mesh;
@@ -202,8 +214,8 @@ int SceneBuilder::addBox(const std::string& name, const glm::vec3& min, const gl
     return addNode(name, addMesh(name, positions, normals, indices, material), t, parent);
 }
 
-int SceneBuilder::addTransformedBox(const std::string& name, const NodeTransform& parentFromUnitBox, int material,
-                                    int parent) {
+int SceneBuilder::addTransformedBox(const std::string& name, const NodeTransform& parentFromUnitBox,
+                                    int material, int parent) {
     std::vector<glm::vec3> positions, normals;
     std::vector<uint32_t> indices;
     appendBox(positions, normals, indices, glm::vec3(0.5f));
@@ -218,8 +230,8 @@ int SceneBuilder::addQuad(const std::string& name, const glm::vec3& corner, cons
     return addNode(name, addMesh(name, positions, normals, indices, material), NodeTransform{}, parent);
 }
 
-int SceneBuilder::addPlane(const std::string& name, const glm::vec3& center, const glm::vec2& size, int material,
-                           int parent) {
+int SceneBuilder::addPlane(const std::string& name, const glm::vec3& center, const glm::vec2& size,
+                           int material, int parent) {
     // cross(+Z, +X) = +Y: the front face looks up.
     const glm::vec3 u(0.f, 0.f, size.y), v(size.x, 0.f, 0.f);
     return addQuad(name, center - 0.5f * u - 0.5f * v, u, v, material, parent);
@@ -236,8 +248,8 @@ void SceneBuilder::setExtra(int node, const std::string& key, const tinygltf::Va
 
 void SceneBuilder::markOffscreen(int node) { setExtra(node, "offscreen_occluder", tinygltf::Value(true)); }
 
-int SceneBuilder::addLightNode(const std::string& name, const tinygltf::Light& light, const glm::vec3& position,
-                               const glm::vec3& direction, int parent) {
+int SceneBuilder::addLightNode(const std::string& name, const tinygltf::Light& light,
+                               const glm::vec3& position, const glm::vec3& direction, int parent) {
     model.lights.push_back(light);
     NodeTransform t;
     t.translation = position;
@@ -263,8 +275,8 @@ int SceneBuilder::addPointLight(const std::string& name, const glm::vec3& positi
 }
 
 int SceneBuilder::addSpotLight(const std::string& name, const glm::vec3& position, const glm::vec3& direction,
-                               const glm::vec3& color, float intensity, float innerConeAngle, float outerConeAngle,
-                               int parent) {
+                               const glm::vec3& color, float intensity, float innerConeAngle,
+                               float outerConeAngle, int parent) {
     tinygltf::Light l;
     l.name = name;
     l.type = "spot";
@@ -275,8 +287,8 @@ int SceneBuilder::addSpotLight(const std::string& name, const glm::vec3& positio
     return addLightNode(name, l, position, direction, parent);
 }
 
-int SceneBuilder::addDirectionalLight(const std::string& name, const glm::vec3& direction, const glm::vec3& color,
-                                      float intensity, int parent) {
+int SceneBuilder::addDirectionalLight(const std::string& name, const glm::vec3& direction,
+                                      const glm::vec3& color, float intensity, int parent) {
     tinygltf::Light l;
     l.name = name;
     l.type = "directional";
@@ -285,8 +297,8 @@ int SceneBuilder::addDirectionalLight(const std::string& name, const glm::vec3& 
     return addLightNode(name, l, glm::vec3(0.f), direction, parent);
 }
 
-int SceneBuilder::addCamera(const std::string& name, const glm::vec3& eye, const glm::vec3& target, float yfovRadians,
-                            float znear, float zfar, const glm::vec3& up) {
+int SceneBuilder::addCamera(const std::string& name, const glm::vec3& eye, const glm::vec3& target,
+                            float yfovRadians, float znear, float zfar, const glm::vec3& up) {
     tinygltf::Camera c;
     c.name = name;
     c.type = "perspective";
@@ -325,7 +337,9 @@ void SceneBuilder::write(const std::string& path) const {
         throw std::runtime_error("SceneBuilder: cannot write " + temporary);
     std::error_code ec;
     std::filesystem::rename(temporary, path, ec);
-    if (ec) throw std::runtime_error("SceneBuilder: cannot rename " + temporary + " to " + path + ": " + ec.message());
+    if (ec)
+        throw std::runtime_error("SceneBuilder: cannot rename " + temporary + " to " + path + ": " +
+                                 ec.message());
 }
 
 }  // namespace vct

@@ -33,8 +33,8 @@ class SceneBuilder {
 
     // Diffuse material; emissive is linear radiance-like RGB (components above 1 are written with
     // KHR_materials_emissive_strength). Returns the material index.
-    int addMaterial(const std::string& name, const glm::vec3& baseColor, const glm::vec3& emissive = glm::vec3(0.f),
-                    bool doubleSided = false);
+    int addMaterial(const std::string& name, const glm::vec3& baseColor,
+                    const glm::vec3& emissive = glm::vec3(0.f), bool doubleSided = false);
 
     // Raw mesh, one primitive. normals empty = none written (the loader computes flat ones);
     // indices empty = non-indexed. mode is a TINYGLTF_MODE_* value. Returns the mesh index.
@@ -44,16 +44,18 @@ class SceneBuilder {
 
     // Nodes; parent = -1 for a root. Return the node index.
     int addNode(const std::string& name, int mesh = -1, const NodeTransform& transform = {}, int parent = -1);
-    int addNodeMatrix(const std::string& name, const glm::mat4& parentFromNode, int mesh = -1, int parent = -1);
+    int addNodeMatrix(const std::string& name, const glm::mat4& parentFromNode, int mesh = -1,
+                      int parent = -1);
 
     // Axis-aligned box [min, max] (a mesh centred on its node, node translated to the centre).
-    int addBox(const std::string& name, const glm::vec3& min, const glm::vec3& max, int material, int parent = -1);
+    int addBox(const std::string& name, const glm::vec3& min, const glm::vec3& max, int material,
+               int parent = -1);
     // The unit box [-0.5, 0.5]^3 under an arbitrary node transform.
     int addTransformedBox(const std::string& name, const NodeTransform& parentFromUnitBox, int material,
                           int parent = -1);
     // Parallelogram corner, corner+u, corner+u+v, corner+v; its front face is on the side of cross(u, v).
-    int addQuad(const std::string& name, const glm::vec3& corner, const glm::vec3& edgeU, const glm::vec3& edgeV,
-                int material, int parent = -1);
+    int addQuad(const std::string& name, const glm::vec3& corner, const glm::vec3& edgeU,
+                const glm::vec3& edgeV, int material, int parent = -1);
     // Horizontal rectangle of size.x (along X) by size.y (along Z) centred at `center`, facing +Y.
     int addPlane(const std::string& name, const glm::vec3& center, const glm::vec2& size, int material,
                  int parent = -1);
@@ -63,8 +65,8 @@ class SceneBuilder {
     void setExtra(int node, const std::string& key, const tinygltf::Value& value);
 
     // KHR_lights_punctual; intensity in candela (point, spot) or lux (directional). Return the node index.
-    int addPointLight(const std::string& name, const glm::vec3& position, const glm::vec3& color, float intensity,
-                      int parent = -1);
+    int addPointLight(const std::string& name, const glm::vec3& position, const glm::vec3& color,
+                      float intensity, int parent = -1);
     int addSpotLight(const std::string& name, const glm::vec3& position, const glm::vec3& direction,
                      const glm::vec3& color, float intensity, float innerConeAngle, float outerConeAngle,
                      int parent = -1);

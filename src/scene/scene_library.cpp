@@ -10,7 +10,8 @@
 namespace vct {
 namespace {
 
-const glm::vec3 kWhite(0.73f, 0.73f, 0.73f);  // Cornell box reflectances (Cornell program of computer graphics)
+const glm::vec3 kWhite(0.73f, 0.73f,
+                       0.73f);  // Cornell box reflectances (Cornell program of computer graphics)
 const glm::vec3 kRed(0.63f, 0.065f, 0.05f);
 const glm::vec3 kGreen(0.14f, 0.45f, 0.091f);
 const glm::vec3 kFloorGrey(0.7f);
@@ -34,14 +35,16 @@ glm::vec3 targetPitchedDown(const glm::vec3& eye, float pitchDownDegrees, float 
 }
 
 // An off-screen occluder: named "offscreen_*" and flagged in extras, so either convention finds it.
-int offscreenBox(SceneBuilder& b, const std::string& name, const glm::vec3& min, const glm::vec3& max, int material) {
+int offscreenBox(SceneBuilder& b, const std::string& name, const glm::vec3& min, const glm::vec3& max,
+                 int material) {
     const int node = b.addBox("offscreen_" + name, min, max, material);
     b.markOffscreen(node);
     return node;
 }
 
 void addSun(SceneBuilder& b, float intensity = 2.f) {
-    b.addDirectionalLight("sun", glm::normalize(glm::vec3(0.4f, -1.f, -0.3f)), glm::vec3(1.f, 0.96f, 0.9f), intensity);
+    b.addDirectionalLight("sun", glm::normalize(glm::vec3(0.4f, -1.f, -0.3f)), glm::vec3(1.f, 0.96f, 0.9f),
+                          intensity);
 }
 
 SceneBuilder cornellBox() {
@@ -56,13 +59,16 @@ SceneBuilder cornellBox() {
     b.addQuad("back_wall", glm::vec3(-1, 0, -1), glm::vec3(2, 0, 0), glm::vec3(0, 2, 0), white);
     b.addQuad("left_wall", glm::vec3(-1, 0, -1), glm::vec3(0, 2, 0), glm::vec3(0, 0, 2), red);
     b.addQuad("right_wall", glm::vec3(1, 0, -1), glm::vec3(0, 0, 2), glm::vec3(0, 2, 0), green);
-    b.addTransformedBox("tall_box", boxAt(glm::vec3(-0.33f, 0.6f, -0.3f), glm::vec3(0.6f, 1.2f, 0.6f), 17.f), white);
+    b.addTransformedBox("tall_box", boxAt(glm::vec3(-0.33f, 0.6f, -0.3f), glm::vec3(0.6f, 1.2f, 0.6f), 17.f),
+                        white);
     b.addTransformedBox("short_box", boxAt(glm::vec3(0.35f, 0.3f, 0.35f), glm::vec3(0.6f), -17.f), white);
     // The emitter 2 cm under the ceiling, facing down: cross(+X, +Z) = -Y.
-    b.addQuad("ceiling_light", glm::vec3(-0.25f, 1.98f, -0.25f), glm::vec3(0.5f, 0, 0), glm::vec3(0, 0, 0.5f), light);
+    b.addQuad("ceiling_light", glm::vec3(-0.25f, 1.98f, -0.25f), glm::vec3(0.5f, 0, 0), glm::vec3(0, 0, 0.5f),
+              light);
     b.addPointLight("ceiling_point", glm::vec3(0.f, 1.8f, 0.f), glm::vec3(1.f, 0.85f, 0.6f), 4.f);
     // The classic camera: 39.3 degrees frames the 2 m opening from 2.9 m in front of it.
-    b.addCamera("front", glm::vec3(0.f, 1.f, 3.9f), glm::vec3(0.f, 1.f, 0.f), glm::radians(39.3f), 0.1f, 20.f);
+    b.addCamera("front", glm::vec3(0.f, 1.f, 3.9f), glm::vec3(0.f, 1.f, 0.f), glm::radians(39.3f), 0.1f,
+                20.f);
     return b;
 }
 
@@ -85,18 +91,20 @@ SceneBuilder courtyard() {
     b.addBox("table_top", glm::vec3(-2.f, 0.75f, 0.2f), glm::vec3(-0.6f, 0.8f, 1.2f), wood);
     for (int i = 0; i < 4; ++i) {
         const float x = i % 2 ? -0.7f : -1.95f, z = i / 2 ? 1.1f : 0.25f;
-        b.addBox("table_leg_" + std::to_string(i), glm::vec3(x, 0.f, z - 0.05f), glm::vec3(x + 0.05f, 0.75f, z),
-                 wood);
+        b.addBox("table_leg_" + std::to_string(i), glm::vec3(x, 0.f, z - 0.05f),
+                 glm::vec3(x + 0.05f, 0.75f, z), wood);
     }
     b.addTransformedBox("crate_large", boxAt(glm::vec3(2.5f, 0.5f, 1.2f), glm::vec3(1.f), 30.f), teal);
     b.addTransformedBox("crate_small", boxAt(glm::vec3(2.45f, 1.25f, 1.15f), glm::vec3(0.5f), -10.f), teal);
     b.addBox("pillar", glm::vec3(-3.6f, 0.f, 1.8f), glm::vec3(-3.1f, 2.6f, 2.3f), wall);
     b.addBox("bench", glm::vec3(1.5f, 0.f, -4.7f), glm::vec3(4.f, 0.45f, -4.2f), wood);
     // A glowing panel on the back wall, 1 cm in front of it, facing +Z.
-    b.addQuad("glow_panel", glm::vec3(2.f, 1.2f, -4.69f), glm::vec3(1.5f, 0.f, 0.f), glm::vec3(0.f, 0.6f, 0.f), glow);
+    b.addQuad("glow_panel", glm::vec3(2.f, 1.2f, -4.69f), glm::vec3(1.5f, 0.f, 0.f),
+              glm::vec3(0.f, 0.6f, 0.f), glow);
     addSun(b, 3.f);
     b.addPointLight("lamp", glm::vec3(-1.3f, 1.6f, 0.7f), glm::vec3(1.f, 0.8f, 0.55f), 3.f);
-    b.addCamera("main", glm::vec3(4.f, 2.8f, 5.2f), glm::vec3(-0.8f, 0.8f, -1.5f), glm::radians(50.f), 0.1f, 60.f);
+    b.addCamera("main", glm::vec3(4.f, 2.8f, 5.2f), glm::vec3(-0.8f, 0.8f, -1.5f), glm::radians(50.f), 0.1f,
+                60.f);
     return b;
 }
 
@@ -144,7 +152,8 @@ SceneBuilder offscreenSide() {
     b.addBox("back_wall", glm::vec3(-4.f, 0.f, -1.7f), glm::vec3(4.f, 3.f, -1.5f), wall);
     offscreenBox(b, "pillar", glm::vec3(1.28f, 0.f, -1.5f), glm::vec3(1.85f, 2.2f, -1.1f), blue);
     addSun(b);
-    b.addCamera("view", glm::vec3(0.f, 1.f, 0.f), glm::vec3(0.f, 0.9f, -1.5f), glm::radians(50.f), 0.05f, 50.f);
+    b.addCamera("view", glm::vec3(0.f, 1.f, 0.f), glm::vec3(0.f, 0.9f, -1.5f), glm::radians(50.f), 0.05f,
+                50.f);
     return b;
 }
 
@@ -161,7 +170,8 @@ SceneBuilder offscreenHidden() {
     b.addBox("blocker", glm::vec3(-0.8f, 0.f, 0.6f), glm::vec3(0.8f, 1.f, 0.8f), blocker);
     offscreenBox(b, "hidden_box", glm::vec3(-0.5f, 0.f, -0.7f), glm::vec3(0.5f, 0.6f, -0.2f), blue);
     addSun(b);
-    b.addCamera("view", glm::vec3(0.f, 1.2f, 3.f), glm::vec3(0.f, 0.7f, -0.8f), glm::radians(45.f), 0.05f, 50.f);
+    b.addCamera("view", glm::vec3(0.f, 1.2f, 3.f), glm::vec3(0.f, 0.7f, -0.8f), glm::radians(45.f), 0.05f,
+                50.f);
     return b;
 }
 
@@ -196,10 +206,12 @@ SceneBuilder wallBase() {
     SceneBuilder b("wall_base");
     const int floor = b.addMaterial("floor", kFloorGrey);
     const int wall = b.addMaterial("wall", kWallBeige);
-    b.addQuad("floor", glm::vec3(-20.f, 0.f, 0.f), glm::vec3(0.f, 0.f, 20.f), glm::vec3(40.f, 0.f, 0.f), floor);
+    b.addQuad("floor", glm::vec3(-20.f, 0.f, 0.f), glm::vec3(0.f, 0.f, 20.f), glm::vec3(40.f, 0.f, 0.f),
+              floor);
     b.addQuad("wall", glm::vec3(-20.f, 0.f, 0.f), glm::vec3(40.f, 0.f, 0.f), glm::vec3(0.f, 20.f, 0.f), wall);
     b.addDirectionalLight("sun", glm::normalize(glm::vec3(0.3f, -1.f, -0.5f)), glm::vec3(1.f), 1.f);
-    b.addCamera("view", glm::vec3(0.f, 2.f, 6.f), glm::vec3(0.f, 0.5f, 0.f), glm::radians(50.f), 0.05f, 200.f);
+    b.addCamera("view", glm::vec3(0.f, 2.f, 6.f), glm::vec3(0.f, 0.5f, 0.f), glm::radians(50.f), 0.05f,
+                200.f);
     return b;
 }
 

@@ -10,8 +10,6 @@
 
 namespace vct {
 
-void buildIsotropicMips(VoxelGrid& grid);  // mips.cpp
-
 namespace {
 
 constexpr float HALF_SAFE_MAX = 30000.f;
@@ -60,12 +58,15 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
     const ShaderDefines defines = {{"RADIANCE_FORMAT", glslImageFormat(format)},
                                    {"RADIANCE_FORMAT_MAX", formatMaxLiteral(format)}};
     GlProgram inject = buildComputeProgram("voxelize/inject.glsl", defines);
-    GlProgram bounce;
-    if (bounces > 0) bounce = buildComputeProgram("voxelize/bounce.glsl", defines);
-
-    auto scope = timer.scope("inject");
     const glm::ivec3 res = grid.resolution;
     grid.radiance = createTexture3D(format, res.x, res.y, res.z, grid.levels);
+    GlProgram bounce, mips;
+    if (bounces > 0) {
+        bounce = buildComputeProgram("voxelize/bounce.glsl", defines);
+        mips = buildIsotropicMipProgram(grid);
+    }
+
+    auto scope = timer.scope("inject");
 
     // Direct light and emission.
     bindSceneBuffers(gpuScene);
@@ -94,7 +95,7 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
         setUniform(b, "uSky", bounceSky ? sky : 0.f);
         setUniform(b, "uMaxLevel", float(grid.levels - 1));
         for (int i = 0; i < bounces; ++i) {
-            buildIsotropicMips(grid);
+            buildIsotropicMips(grid, mips);
             glBindTextureUnit(0, grid.radiance.id());
             glBindTextureUnit(1, direct.id());
             glBindTextureUnit(2, grid.albedo.id());

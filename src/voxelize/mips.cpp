@@ -21,16 +21,17 @@ void dispatchGrid(const glm::ivec3& size) {
 
 }  // namespace
 
-// Isotropic levels 1.. of opacity and radiance; also used between bounces by injection.
-void buildIsotropicMips(VoxelGrid& grid) {
-    const bool hasRadiance = bool(grid.radiance);
+GlProgram buildIsotropicMipProgram(const VoxelGrid& grid) {
     ShaderDefines defines;
-    GLenum radianceFormat = GL_RGBA16F;
-    if (hasRadiance) {
-        radianceFormat = textureInternalFormat(grid.radiance.id());
-        defines = {{"HAS_RADIANCE", "1"}, {"RADIANCE_FORMAT", glslImageFormat(radianceFormat)}};
-    }
-    GlProgram program = buildComputeProgram("voxelize/mip_iso.glsl", defines);
+    if (grid.radiance)
+        defines = {{"HAS_RADIANCE", "1"},
+                   {"RADIANCE_FORMAT", glslImageFormat(textureInternalFormat(grid.radiance.id()))}};
+    return buildComputeProgram("voxelize/mip_iso.glsl", defines);
+}
+
+void buildIsotropicMips(VoxelGrid& grid, const GlProgram& program) {
+    const bool hasRadiance = bool(grid.radiance);
+    const GLenum radianceFormat = hasRadiance ? textureInternalFormat(grid.radiance.id()) : GL_RGBA16F;
     glUseProgram(program.id());
     for (int level = 1; level < grid.levels; ++level) {
         glm::ivec3 src = levelSize(grid.resolution, level - 1), dst = levelSize(grid.resolution, level);
@@ -49,27 +50,41 @@ void buildIsotropicMips(VoxelGrid& grid) {
 
 namespace {
 
-void buildAnisotropicMips(VoxelGrid& grid) {
+struct AnisoPrograms {
+    GlProgram first;  // pyramid level 1 from the base texture
+    GlProgram rest;   // from the directional texture's previous level
+};
+
+GLenum anisoBaseFormat(const VoxelGrid& grid) {
+    return grid.radiance ? textureInternalFormat(grid.radiance.id()) : GL_R16F;
+}
+
+// RGBA16F per the contract, RGBA32F when the radiance itself needed float precision.
+GLenum anisoFormatFor(GLenum baseFormat) { return baseFormat == GL_RGBA32F ? GL_RGBA32F : GL_RGBA16F; }
+
+AnisoPrograms buildAnisoPrograms(const VoxelGrid& grid) {
+    const GLenum baseFormat = anisoBaseFormat(grid), anisoFormat = anisoFormatFor(baseFormat);
+    ShaderDefines firstDefines = {{"SRC_FORMAT", glslImageFormat(baseFormat)},
+                                  {"DST_FORMAT", glslImageFormat(anisoFormat)}};
+    if (!grid.radiance) firstDefines.push_back({"SOURCE_OPACITY", "1"});
+    ShaderDefines restDefines = {{"SRC_FORMAT", glslImageFormat(anisoFormat)},
+                                 {"DST_FORMAT", glslImageFormat(anisoFormat)}};
+    return {buildComputeProgram("voxelize/mip_aniso.glsl", firstDefines),
+            buildComputeProgram("voxelize/mip_aniso.glsl", restDefines)};
+}
+
+void buildAnisotropicMips(VoxelGrid& grid, const AnisoPrograms& programs) {
     const int anisoLevels = grid.levels - 1;
     if (anisoLevels < 1) throw std::invalid_argument("voxel grid too small for anisotropic mips");
     const bool hasRadiance = bool(grid.radiance);
-    const GLenum baseFormat = hasRadiance ? textureInternalFormat(grid.radiance.id()) : GL_R16F;
-    // RGBA16F per the contract, RGBA32F when the radiance itself needed float precision.
-    const GLenum anisoFormat = baseFormat == GL_RGBA32F ? GL_RGBA32F : GL_RGBA16F;
-    ShaderDefines firstDefines = {{"SRC_FORMAT", glslImageFormat(baseFormat)},
-                                  {"DST_FORMAT", glslImageFormat(anisoFormat)}};
-    if (!hasRadiance) firstDefines.push_back({"SOURCE_OPACITY", "1"});
-    ShaderDefines restDefines = {{"SRC_FORMAT", glslImageFormat(anisoFormat)},
-                                 {"DST_FORMAT", glslImageFormat(anisoFormat)}};
-    GlProgram first = buildComputeProgram("voxelize/mip_aniso.glsl", firstDefines);
-    GlProgram rest = buildComputeProgram("voxelize/mip_aniso.glsl", restDefines);
+    const GLenum baseFormat = anisoBaseFormat(grid), anisoFormat = anisoFormatFor(baseFormat);
 
     const glm::ivec3 base = levelSize(grid.resolution, 1);
     for (int d = 0; d < 6; ++d)
         grid.anisoRadiance[size_t(d)] = createTexture3D(anisoFormat, base.x, base.y, base.z, anisoLevels);
     const GLuint baseTexture = hasRadiance ? grid.radiance.id() : grid.opacity.id();
     for (int level = 0; level < anisoLevels; ++level) {
-        const GLuint p = level == 0 ? first.id() : rest.id();
+        const GLuint p = level == 0 ? programs.first.id() : programs.rest.id();
         glUseProgram(p);
         // Pyramid level level + 1 from pyramid level `level`.
         glm::ivec3 src = levelSize(grid.resolution, level), dst = levelSize(grid.resolution, level + 1);
@@ -93,9 +108,12 @@ void buildAnisotropicMips(VoxelGrid& grid) {
 
 void buildMips(VoxelGrid& grid, bool anisotropic, PassTimer& timer) {
     if (!grid.opacity) throw std::invalid_argument("buildMips: the grid has no opacity (voxelize first)");
+    GlProgram iso = buildIsotropicMipProgram(grid);
+    AnisoPrograms aniso;
+    if (anisotropic) aniso = buildAnisoPrograms(grid);
     auto scope = timer.scope("mips");
-    buildIsotropicMips(grid);
-    if (anisotropic) buildAnisotropicMips(grid);
+    buildIsotropicMips(grid, iso);
+    if (anisotropic) buildAnisotropicMips(grid, aniso);
     else {
         for (GlTexture& t : grid.anisoRadiance) t.reset();
         grid.anisotropic = false;

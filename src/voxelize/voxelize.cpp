@@ -74,7 +74,7 @@ VoxelGrid voxelizeScene(const GpuScene& scene, const Bounds3& region, int voxelR
         glClearTexImage(acc.back().id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
         bindImage3D(GLuint(i), acc.back().id(), 0, GL_READ_WRITE, GL_R32UI);
     }
-    // Big-triangle list; its header doubles as the indirect dispatch arguments.
+    // Big-triangle list: header {count, -, -, occupied voxels}, then triangle ids.
     std::vector<uint32_t> header = {0, 1, 1, 0};
     header.resize(4 + size_t(std::max(1, scene.triangleCount)), 0);
     GlBuffer bigList = createBuffer(header.size() * sizeof(uint32_t), header.data());
@@ -91,10 +91,17 @@ VoxelGrid voxelizeScene(const GpuScene& scene, const Bounds3& region, int voxelR
         glUseProgram(smallPass.id());
         glDispatchCompute(groupCount(scene.triangleCount, gpu::VOX_TRI_GROUP), 1, 1);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+        // The big-triangle count comes back to the CPU: llvmpipe was seen to run an indirect
+        // dispatch with arguments read before the small pass finished (despite
+        // GL_COMMAND_BARRIER_BIT), silently dropping every big triangle.
+        uint32_t bigCount = 0;
+        glGetNamedBufferSubData(bigList.id(), 0, sizeof(uint32_t), &bigCount);
         glUseProgram(bigPass.id());
-        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, bigList.id());
-        glDispatchComputeIndirect(0);
-        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+        const uint32_t maxGroups = 65535;  // the GL minimum of GL_MAX_COMPUTE_WORK_GROUP_COUNT
+        for (uint32_t base = 0; base < bigCount; base += maxGroups) {
+            glProgramUniform1ui(bigPass.id(), glGetUniformLocation(bigPass.id(), "uBigBase"), base);
+            glDispatchCompute(std::min(maxGroups, bigCount - base), 1, 1);
+        }
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
 

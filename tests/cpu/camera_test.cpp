@@ -30,7 +30,8 @@ vct::Scene twoCameraScene() {
 
 TEST(CameraResolve, DefaultFramingContainsEveryBoundsCorner) {
     const vct::Bounds3 cases[] = {boundsOf({-1, 0, -1}, {1, 2, 1}), boundsOf({-20, -1, -3}, {40, 2, 5}),
-                                  boundsOf({1e-4f, 0, 0}, {2e-4f, 1e-4f, 3e-4f}), boundsOf({-5, -5, -90}, {5, 5, 90})};
+                                  boundsOf({1e-4f, 0, 0}, {2e-4f, 1e-4f, 3e-4f}),
+                                  boundsOf({-5, -5, -90}, {5, 5, 90})};
     for (const vct::Bounds3& b : cases) {
         for (float aspect : {0.5f, 1.f, 16.f / 9.f, 3.f}) {
             const vct::Camera c = vct::defaultCamera(b, aspect);
@@ -38,7 +39,8 @@ TEST(CameraResolve, DefaultFramingContainsEveryBoundsCorner) {
                 glm::perspective(c.yfov, aspect, c.znear, c.zfar) * glm::lookAt(c.eye, c.target, c.up);
             bool anyNearEdge = false;
             for (int i = 0; i < 8; ++i) {
-                const glm::vec3 corner(i & 1 ? b.max.x : b.min.x, i & 2 ? b.max.y : b.min.y, i & 4 ? b.max.z : b.min.z);
+                const glm::vec3 corner(i & 1 ? b.max.x : b.min.x, i & 2 ? b.max.y : b.min.y,
+                                       i & 4 ? b.max.z : b.min.z);
                 const glm::vec4 clip = clipFromWorld * glm::vec4(corner, 1.f);
                 ASSERT_GT(clip.w, 0.f);
                 const glm::vec3 ndc = glm::vec3(clip) / clip.w;
@@ -48,7 +50,8 @@ TEST(CameraResolve, DefaultFramingContainsEveryBoundsCorner) {
                 EXPECT_LE(ndc.z, 1.f) << "corner before zfar";
                 anyNearEdge = anyNearEdge || std::max(std::abs(ndc.x), std::abs(ndc.y)) > 0.3f;
             }
-            EXPECT_TRUE(anyNearEdge) << "the framing should not leave the scene tiny (aspect " << aspect << ")";
+            EXPECT_TRUE(anyNearEdge) << "the framing should not leave the scene tiny (aspect " << aspect
+                                     << ")";
             EXPECT_GT(c.eye.y, b.center().y) << "elevated view";
         }
     }
@@ -114,6 +117,7 @@ TEST(CameraResolve, UnknownCameraListsTheAvailableOnes) {
 TEST(CameraResolve, ParseVec3) {
     EXPECT_EQ(vct::parseVec3("1,2,3"), glm::vec3(1, 2, 3));
     EXPECT_EQ(vct::parseVec3(" 1.5, -2 ,3e2"), glm::vec3(1.5f, -2.f, 300.f));
-    for (const char* bad : {"", "1,2", "1,2,3,4", "a,b,c", "1,,3", "1,2,3x", "nan,0,0", "0,inf,0", "1e39,0,0"})
+    for (const char* bad :
+         {"", "1,2", "1,2,3,4", "a,b,c", "1,,3", "1,2,3x", "nan,0,0", "0,inf,0", "1e39,0,0"})
         EXPECT_THROW(vct::parseVec3(bad), std::invalid_argument) << "'" << bad << "'";
 }

@@ -17,7 +17,8 @@ namespace fs = std::filesystem;
 namespace {
 
 // Möller-Trumbore; returns the hit distance or +inf. Both faces count.
-float intersect(const glm::vec3& o, const glm::vec3& d, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+float intersect(const glm::vec3& o, const glm::vec3& d, const glm::vec3& a, const glm::vec3& b,
+                const glm::vec3& c) {
     const glm::vec3 e1 = b - a, e2 = c - a, p = glm::cross(d, e2);
     const float det = glm::dot(e1, p);
     if (std::abs(det) < 1e-12f) return std::numeric_limits<float>::infinity();
@@ -147,18 +148,14 @@ TEST(SceneLibrary, CornellBoxHasEmitterPointLightAndCamera) {
         const glm::vec3 p = s.positions[s.triangles[i].x];
         const glm::vec3 n = s.geometricNormal(i);
         const glm::vec4 albedo = s.materials[s.triangleMaterial[i]].baseColorFactor;
-        if (p.x == -1.f && n.x > 0.99f) {
-            EXPECT_GT(albedo.r, 3.f * albedo.g);
-        }
-        if (p.x == 1.f && n.x < -0.99f) {
-            EXPECT_GT(albedo.g, 2.f * albedo.r);
-        }
+        if (p.x == -1.f && n.x > 0.99f) { EXPECT_GT(albedo.r, 3.f * albedo.g); }
+        if (p.x == 1.f && n.x < -0.99f) { EXPECT_GT(albedo.g, 2.f * albedo.r); }
     }
 }
 
 TEST(SceneLibrary, OffscreenOccludersAreOutOfViewButNearVisibleSurfaces) {
-    for (const char* name :
-         {"offscreen_overhang", "offscreen_wall_behind", "offscreen_side", "offscreen_hidden", "offscreen_thin"}) {
+    for (const char* name : {"offscreen_overhang", "offscreen_wall_behind", "offscreen_side",
+                             "offscreen_hidden", "offscreen_thin"}) {
         const vct::Scene s = vct::makeProjectScene(name).toScene();
         const size_t marked = size_t(std::count(s.triangleOffscreen.begin(), s.triangleOffscreen.end(), 1));
         EXPECT_GT(marked, 0u) << name;

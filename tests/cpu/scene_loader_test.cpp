@@ -56,9 +56,9 @@ void append(std::vector<unsigned char>& buffer, const std::vector<T>& values) {
 // (accessor 1) and optional uint16 indices (the last accessor); nodes and extra top-level
 // members are spliced in as JSON text.
 struct HandGltf {
-    std::vector<float> positions;  // xyz per vertex
-    std::vector<float> normals;    // empty = no NORMAL
-    std::vector<uint16_t> indices; // empty = non-indexed
+    std::vector<float> positions;   // xyz per vertex
+    std::vector<float> normals;     // empty = no NORMAL
+    std::vector<uint16_t> indices;  // empty = non-indexed
     int mode = 4;
     int positionCountOverride = -1;
     std::string nodes = R"([{"mesh": 0, "name": "n"}])";
@@ -70,15 +70,17 @@ struct HandGltf {
         std::vector<unsigned char> buffer;
         std::ostringstream views, accessors, attributes;
         auto addView = [&](size_t offset, size_t length, bool first) {
-            views << (first ? "" : ",") << R"({"buffer": 0, "byteOffset": )" << offset << R"(, "byteLength": )"
-                  << length << "}";
+            views << (first ? "" : ",") << R"({"buffer": 0, "byteOffset": )" << offset
+                  << R"(, "byteLength": )" << length << "}";
         };
         int view = 0;
         size_t at = buffer.size();
         append(buffer, positions);
         addView(at, positions.size() * 4, true);
-        const int vertexCount = positionCountOverride >= 0 ? positionCountOverride : int(positions.size() / 3);
-        accessors << R"({"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": )" << vertexCount << "}";
+        const int vertexCount =
+            positionCountOverride >= 0 ? positionCountOverride : int(positions.size() / 3);
+        accessors << R"({"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": )" << vertexCount
+                  << "}";
         attributes << R"("POSITION": 0)";
         ++view;
         int accessor = 1;
@@ -86,8 +88,8 @@ struct HandGltf {
             at = buffer.size();
             append(buffer, normals);
             addView(at, normals.size() * 4, false);
-            accessors << R"(,{"bufferView": )" << view << R"(, "componentType": 5126, "type": "VEC3", "count": )"
-                      << normals.size() / 3 << "}";
+            accessors << R"(,{"bufferView": )" << view
+                      << R"(, "componentType": 5126, "type": "VEC3", "count": )" << normals.size() / 3 << "}";
             attributes << R"(, "NORMAL": )" << accessor;
             ++view;
             ++accessor;
@@ -97,8 +99,8 @@ struct HandGltf {
             at = buffer.size();
             append(buffer, indices);
             addView(at, indices.size() * 2, false);
-            accessors << R"(,{"bufferView": )" << view << R"(, "componentType": 5123, "type": "SCALAR", "count": )"
-                      << indices.size() << "}";
+            accessors << R"(,{"bufferView": )" << view
+                      << R"(, "componentType": 5123, "type": "SCALAR", "count": )" << indices.size() << "}";
             indicesField = ", \"indices\": " + std::to_string(accessor);
         }
         std::ostringstream os;
@@ -109,7 +111,8 @@ struct HandGltf {
            << R"("accessors": [)" << accessors.str() << "],\n"
            << R"("bufferViews": [)" << views.str() << "],\n"
            << R"("buffers": [{"byteLength": )" << buffer.size()
-           << R"(, "uri": "data:application/octet-stream;base64,)" << base64(buffer) << "\"}]" << extraTop << "}\n";
+           << R"(, "uri": "data:application/octet-stream;base64,)" << base64(buffer) << "\"}]" << extraTop
+           << "}\n";
         return os.str();
     }
 };
@@ -135,9 +138,7 @@ class SceneLoader : public ::testing::Test {
     static std::string loadError(const std::string& path) {
         try {
             vct::loadScene(path);
-        } catch (const SceneError& e) {
-            return e.what();
-        }
+        } catch (const SceneError& e) { return e.what(); }
         return "";
     }
     fs::path dir;
@@ -192,7 +193,8 @@ TEST_F(SceneLoader, IndexOutOfRangeNamesAccessorMeshAndPrimitive) {
     g.positions = kTriangle;
     g.indices = {0, 1, 77};
     const std::string msg = loadError(write("badindex.gltf", g.json()));
-    EXPECT_CONTAINS(msg, "badindex.gltf: accessor 1 (mesh 'tri', primitive 0, indices): index 77 out of range [0, 3)");
+    EXPECT_CONTAINS(
+        msg, "badindex.gltf: accessor 1 (mesh 'tri', primitive 0, indices): index 77 out of range [0, 3)");
 }
 
 TEST_F(SceneLoader, AccessorBeyondItsBufferViewIsRejected) {
@@ -245,7 +247,8 @@ TEST_F(SceneLoader, NonFiniteLightAndCameraValuesAreRejected) {
     g.positions = kTriangle;
     g.nodes = R"([{"mesh": 0}, {"name": "lamp", "extensions": {"KHR_lights_punctual": {"light": 0}}}])";
     g.rootNodes = "[0, 1]";
-    g.extraTop = R"(, "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 1e39}]}})";
+    g.extraTop =
+        R"(, "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 1e39}]}})";
     std::string msg = loadError(write("badlight.gltf", g.json()));
     EXPECT_CONTAINS(msg, "badlight.gltf: light 0 (node 1 'lamp')");
 
@@ -259,9 +262,9 @@ TEST_F(SceneLoader, DegenerateTrianglesAreDroppedAndCounted) {
     HandGltf g;
     // Vertices 0-3 span a unit square; 4 lies on the line through 0 and 1.
     g.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 2, 0, 0};
-    g.indices = {0, 1, 2, 0, 2, 3,   // two good triangles
-                 0, 0, 1, 1, 2, 2,   // repeated indices
-                 0, 1, 4};           // collinear
+    g.indices = {0, 1, 2, 0, 2, 3,  // two good triangles
+                 0, 0, 1, 1, 2, 2,  // repeated indices
+                 0, 1, 4};          // collinear
     const Scene s = vct::loadScene(write("degenerate.gltf", g.json()));
     EXPECT_EQ(s.triangleCount(), 2u);
     ASSERT_EQ(s.warnings.size(), 1u);
@@ -353,7 +356,8 @@ TEST_F(SceneLoader, StripAndFanBecomeConsistentlyWoundTriangles) {
         for (size_t i = 0; i < 2; ++i) {
             EXPECT_NEAR(s.geometricNormal(i).z, 1.f, 1e-6f) << "mode " << mode << " triangle " << i;
             const glm::uvec3 t = s.triangles[i];
-            area += 0.5f * glm::length(glm::cross(s.positions[t.y] - s.positions[t.x], s.positions[t.z] - s.positions[t.x]));
+            area += 0.5f * glm::length(glm::cross(s.positions[t.y] - s.positions[t.x],
+                                                  s.positions[t.z] - s.positions[t.x]));
         }
         EXPECT_NEAR(area, 1.f, 1e-6f) << "mode " << mode;
     }
@@ -389,7 +393,7 @@ TEST_F(SceneLoader, InterleavedStridedAndNormalizedAccessors) {
     EXPECT_EQ(s.positions[t.y], glm::vec3(2, 0, 0));
     EXPECT_EQ(s.positions[t.z], glm::vec3(0, 2, 0));
     EXPECT_EQ(s.normals[t.x], glm::vec3(0, 0, 1));
-    EXPECT_FLOAT_EQ(s.uvs[t.x].y, 1.f);          // 255 / 255
+    EXPECT_FLOAT_EQ(s.uvs[t.x].y, 1.f);  // 255 / 255
     EXPECT_FLOAT_EQ(s.uvs[t.y].x, 128.f / 255.f);
     EXPECT_FLOAT_EQ(s.uvs[t.z].y, 51.f / 255.f);
 }
@@ -423,7 +427,8 @@ TEST_F(SceneLoader, CameraFromNodeTransform) {
     HandGltf g;
     g.positions = kTriangle;
     // Rotated 180 deg about Y: the camera's -Z looks along +Z.
-    g.nodes = R"([{"mesh": 0}, {"name": "cam_node", "camera": 0, "translation": [0, 1, -4], "rotation": [0, 1, 0, 0]}])";
+    g.nodes =
+        R"([{"mesh": 0}, {"name": "cam_node", "camera": 0, "translation": [0, 1, -4], "rotation": [0, 1, 0, 0]}])";
     g.rootNodes = "[0, 1]";
     g.extraTop = R"(, "cameras": [{"name": "back", "type": "perspective",
         "perspective": {"yfov": 0.6, "znear": 0.2, "zfar": 40}}])";
@@ -458,7 +463,8 @@ TEST_F(SceneLoader, MaterialFactorsEmissiveStrengthAndTexture) {
     HandGltf g;
     g.positions = kTriangle;
     g.materialField = ", \"material\": 0";
-    g.extraTop = R"(, "materials": [{"name": "glowing", "doubleSided": true, "alphaMode": "MASK", "alphaCutoff": 0.3,
+    g.extraTop =
+        R"(, "materials": [{"name": "glowing", "doubleSided": true, "alphaMode": "MASK", "alphaCutoff": 0.3,
         "emissiveFactor": [1, 0.5, 0], "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 4}},
         "pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.25, 1, 1], "baseColorTexture": {"index": 0}}}],
         "textures": [{"source": 0, "sampler": 0}], "images": [{"uri": "tex.png"}],
@@ -480,15 +486,19 @@ TEST_F(SceneLoader, MaterialFactorsEmissiveStrengthAndTexture) {
     EXPECT_FALSE(t.repeatS);
     EXPECT_TRUE(t.repeatT);
     ASSERT_EQ(t.rgba.size(), 16u);
-    EXPECT_EQ(std::vector<uint8_t>(t.rgba.begin(), t.rgba.begin() + 4), (std::vector<uint8_t>{255, 0, 0, 255}));
-    EXPECT_EQ(std::vector<uint8_t>(t.rgba.begin() + 12, t.rgba.end()), (std::vector<uint8_t>{10, 20, 30, 255}));
+    EXPECT_EQ(std::vector<uint8_t>(t.rgba.begin(), t.rgba.begin() + 4),
+              (std::vector<uint8_t>{255, 0, 0, 255}));
+    EXPECT_EQ(std::vector<uint8_t>(t.rgba.begin() + 12, t.rgba.end()),
+              (std::vector<uint8_t>{10, 20, 30, 255}));
 }
 
 TEST_F(SceneLoader, GlbAndGltfFromTheBuilderLoadTheSame) {
     vct::SceneBuilder b("roundtrip");
     const int m = b.addMaterial("m", glm::vec3(0.5f));
-    b.addTransformedBox("box", vct::NodeTransform{glm::vec3(1, 2, 3), glm::angleAxis(0.3f, glm::vec3(0, 1, 0)),
-                                                  glm::vec3(1, 2, 3)}, m);
+    b.addTransformedBox(
+        "box",
+        vct::NodeTransform{glm::vec3(1, 2, 3), glm::angleAxis(0.3f, glm::vec3(0, 1, 0)), glm::vec3(1, 2, 3)},
+        m);
     b.addPointLight("p", glm::vec3(0, 5, 0), glm::vec3(1), 2.f);
     const std::string glb = (dir / "r.glb").string(), gltf = (dir / "r.gltf").string();
     b.write(glb);
