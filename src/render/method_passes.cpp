@@ -2,26 +2,118 @@
 
 #include "ao/screen_space_ao.h"
 #include "gl/context.h"
+#include "gl/readback.h"
+#include "reference/embree_scene.h"
+#include "reference/reference_ao.h"
+#include "reference/reference_gi.h"
 
 #include <stdexcept>
 
 namespace vct {
 
-struct MethodCache::Impl {};
+struct MethodCache::Impl {
+    std::unique_ptr<EmbreeScene> embree;  // built on first use by a reference pass
+};
+
+namespace {
+
+MethodCache::Impl& cacheOf(MethodCache& c) {
+    if (!c.impl) c.impl = std::make_shared<MethodCache::Impl>();
+    return *c.impl;
+}
+
+const EmbreeScene& embreeOf(MethodCache& c, const Scene& scene) {
+    auto& impl = cacheOf(c);
+    if (!impl.embree) impl.embree = std::make_unique<EmbreeScene>(scene);
+    return *impl.embree;
+}
+
+ReferenceSettings referenceSettings(const RenderRequest& r) {
+    ReferenceSettings base;
+    base.radius = r.radius;
+    base.spp = r.spp;
+    base.seed = r.seed;
+    base.sky = r.sky;
+    return referenceSettingsFromParams(r.params, base);
+}
+
+// The G-buffer's surface points (pixel centres), top row first, for the reference.
+std::vector<SurfacePoint> gbufferPoints(const GBuffer& g) {
+    Image pos = readTexture2D(g.position.id(), g.width, g.height, 4);
+    Image nrm = readTexture2D(g.normal.id(), g.width, g.height, 4);
+    Image geo = readTexture2D(g.geomNormal.id(), g.width, g.height, 4);
+    std::vector<SurfacePoint> pts(size_t(g.width) * g.height);
+    for (size_t i = 0; i < pts.size(); ++i) {
+        const float* p = &pos.pixels[4 * i];
+        const float* n = &nrm.pixels[4 * i];
+        const float* q = &geo.pixels[4 * i];
+        pts[i].position = glm::vec3(p[0], p[1], p[2]);
+        pts[i].normal = glm::vec3(n[0], n[1], n[2]);
+        pts[i].geomNormal = glm::vec3(q[0], q[1], q[2]);
+        pts[i].valid = p[3] > 0.f;
+    }
+    return pts;
+}
+
+void runReferenceAo(const RenderRequest& r, const Scene& scene, const GBuffer& g, const View& view,
+                    PassTimer& timer, MethodCache& cache, MethodOutputs& out, nlohmann::json& extra) {
+    const ReferenceSettings settings = referenceSettings(r);
+    const bool area = r.params.getChoice("reference.pixel", "center", {"center", "area"},
+                                         "reference: AO at the G-buffer's pixel centres, or averaged over the "
+                                         "pixel with jittered primary rays (box filter, as Cycles)") == "area";
+    const EmbreeScene& embree = embreeOf(cache, scene);
+    auto scope = timer.scope("reference_ao", false);
+    ReferenceAO ao = area ? referenceAOPixelArea(embree, view, settings)
+                          : [&] {
+                                ReferenceAO a = referenceAO(embree, gbufferPoints(g), settings);
+                                a.width = g.width;
+                                a.height = g.height;
+                                return a;
+                            }();
+    out.aoImage = ao.aoImage();
+    out.aoStderr = ao.stderrImage();
+    extra["reference_ao"] = {{"spp", ao.sppUsed}, {"mean_stderr", ao.meanStderr}, {"rays", ao.raysTraced},
+                             {"primary_rays", ao.primaryRays}, {"rays_per_second", ao.raysPerSecond},
+                             {"pixel", area ? "area" : "center"}};
+}
+
+void runReferenceGi(const RenderRequest& r, const Scene& scene, const View& view, PassTimer& timer,
+                    MethodCache& cache, MethodOutputs& out, nlohmann::json& extra) {
+    const ReferenceSettings settings = referenceSettings(r);
+    const bool area = r.params.getChoice("reference.pixel", "center", {"center", "area"}) == "area";
+    const EmbreeScene& embree = embreeOf(cache, scene);
+    auto scope = timer.scope("reference_gi", false);
+    ReferenceGI gi = referenceGI(embree, view, settings, area);
+    out.indirectImage = gi.indirect;
+    out.ptDirect = gi.direct;
+    out.ptBeauty = gi.beauty;
+    // One channel: the mean of the RGB standard errors.
+    out.indirectStderr = Image(gi.width, gi.height, 1);
+    for (size_t i = 0; i < size_t(gi.width) * gi.height; ++i) {
+        const float* s = &gi.indirectStderr.pixels[3 * i];
+        out.indirectStderr.pixels[i] = (s[0] + s[1] + s[2]) / 3.f;
+    }
+    extra["reference_gi"] = {{"spp", gi.sppUsed}, {"mean_stderr", gi.meanStderr}, {"rays", gi.raysTraced},
+                             {"rays_per_second", gi.raysPerSecond}, {"bounces", settings.bounces}};
+}
+
+}  // namespace
 
 MethodOutputs runMethodPasses(const RenderPlan& plan, const RenderRequest& request, const Scene& scene,
                               const GpuScene& gpu, const GBuffer* gbuffer, const View& view, PassTimer& timer,
                               MethodCache& cache, std::map<std::string, int>& runCounts, nlohmann::json& extra) {
-    (void)scene; (void)gpu; (void)cache; (void)runCounts; (void)extra;
+    (void)gpu;
+    (void)runCounts;
     MethodOutputs out;
     GlContext& gl = GlContext::shared();
     if (plan.runs("ssao")) {
         out.ao = computeScreenSpaceAO(request.ao, *gbuffer, view, request.radius, request.params, request.seed, timer);
         gl.checkErrors("ssao");
     }
-    for (const char* pass : {"voxelize", "cone_ao", "cone_gi", "reference_ao", "reference_gi"})
-        if (plan.runs(pass))
-            throw std::invalid_argument(std::string("pass '") + pass + "' is not implemented yet");
+    if (plan.runs("reference_ao")) runReferenceAo(request, scene, *gbuffer, view, timer, cache, out, extra);
+    if (plan.runs("reference_gi")) runReferenceGi(request, scene, view, timer, cache, out, extra);
+    for (const char* pass : {"voxelize", "cone_ao", "cone_gi"})
+        if (plan.runs(pass)) throw std::invalid_argument(std::string("pass '") + pass + "' is not implemented yet");
     return out;
 }
 

@@ -29,7 +29,7 @@ std::string formatMaxLiteral(GLenum internalFormat);
 struct VoxelGrid;
 // Isotropic mip levels 1.. of opacity and (if present) radiance (mips.cpp); injection uses
 // them between bounces. Build the program once per grid format.
-GlHandle<gldetail::deleteProgram> buildIsotropicMipProgram(const VoxelGrid& grid);
-void buildIsotropicMips(VoxelGrid& grid, const GlHandle<gldetail::deleteProgram>& program);
+GlProgram buildIsotropicMipProgram(const VoxelGrid& grid);
+void buildIsotropicMips(VoxelGrid& grid, const GlProgram& program);
 
 }  // namespace vct

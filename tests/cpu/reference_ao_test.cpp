@@ -3,6 +3,7 @@
 // area on the floor), never produced by the code under test.
 #include "reference/reference_ao.h"
 #include "reference/scene_shapes.h"
+#include "render/params.h"
 #include "render/view.h"
 
 #include <gtest/gtest.h>
@@ -73,6 +74,21 @@ TEST(ReferenceAO, OpenPlaneIsExactlyOne) {
     }
     EXPECT_EQ(r.sppUsed, 256);
     EXPECT_GT(r.raysTraced, 0u);
+}
+
+TEST(ReferenceAO, SettingsFromParams) {
+    ParamMap params;
+    params.set("reference.spp=32");
+    params.set("reference.ray-mode=packet16");
+    params.set("reference.replicates=1");
+    ReferenceSettings s = referenceSettingsFromParams(params);
+    EXPECT_EQ(s.spp, 32);
+    EXPECT_EQ(s.rayMode, RayMode::Packet16);
+    EXPECT_EQ(s.replicates, 1);
+    EXPECT_EQ(s.bounces, 4);  // untouched default
+    ParamMap bad;
+    bad.set("reference.spp=0");
+    EXPECT_THROW(referenceSettingsFromParams(bad), std::invalid_argument);
 }
 
 TEST(ReferenceAO, InvalidPointsAreSky) {

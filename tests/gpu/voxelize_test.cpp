@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -359,7 +360,7 @@ struct FloorScene {
     float rho = 0.5f;
     glm::vec3 lightDir = glm::normalize(glm::vec3(0.3f, -1.f, 0.2f));  // direction of travel
     float lux = 3.f;
-    glm::vec2 blockerLo{-0.5f, -0.5f}, blockerHi{0.1f, 0.1f};
+    glm::vec2 blockerLo{-0.7f, -0.7f}, blockerHi{0.3f, 0.3f};
     float blockerY = 0.8f;
     explicit FloorScene(bool blocker) {
         t.addMaterial(glm::vec3(rho));
@@ -444,6 +445,53 @@ TEST(Inject, FloorRadianceDoesNotDependOnResolution) {
     double rel = std::abs(a.meanFloor - b.meanFloor) / b.meanFloor;
     EXPECT_LT(rel, 0.05);
     std::printf("  floor mean radiance %.5f at 32^3, %.5f at 64^3 (rel diff %.3f)\n", a.meanFloor, b.meanFloor, rel);
+}
+
+TEST(Inject, SpotLightFollowsInverseSquareAndGltfFalloff) {
+    TestScene t;
+    const float rho = 0.6f;
+    t.addMaterial(glm::vec3(rho));
+    t.addQuad({-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1});
+    t.scene.bounds.expand(glm::vec3(0.f, 1.f, 0.f));
+    Light l;
+    l.type = LightType::Spot;
+    l.position = {0.1f, 0.9f, -0.05f};
+    l.direction = {0.f, -1.f, 0.f};
+    l.color = glm::vec3(2.f);  // candela
+    l.innerConeAngle = 0.3f;
+    l.outerConeAngle = 0.6f;
+    t.scene.lights.push_back(l);
+    GpuScene gpu = upload(t.scene);
+    VoxelGrid g = voxelize(t.scene, gpu, 32);
+    PassTimer timer;
+    injectRadiance(g, gpu, t.scene, 0.f, ParamMap(), timer);
+    GlContext::shared().checkErrors("inject spot");
+    Volume r = readVolume(g.radiance, 0, 4);
+    int inner = 0, falloff = 0, outside = 0;
+    double maxErr = 0.0;
+    for (int z = 0; z < g.resolution.z; ++z)
+        for (int y = 0; y < g.resolution.y; ++y)
+            for (int x = 0; x < g.resolution.x; ++x) {
+                float alpha = r.at(x, y, z, 3);
+                glm::dvec3 c = glm::dvec3(g.origin) + (glm::dvec3(x, y, z) + 0.5) * double(g.voxelSize);
+                if (alpha <= 0.f || std::abs(c.y) > g.voxelSize) continue;
+                // Closed form at the voxel centre (normal +y): E = I cos / d^2 * att^2.
+                glm::dvec3 toLight = glm::dvec3(l.position) - c;
+                double d = glm::length(toLight);
+                double cosTheta = toLight.y / d, cd = cosTheta;  // spot axis is -y
+                double att = std::clamp((cd - std::cos(0.6)) / (std::cos(0.3) - std::cos(0.6)), 0.0, 1.0);
+                double expected = rho / PI * 2.0 * cosTheta / (d * d) * att * att;
+                double L = r.at(x, y, z, 0) / alpha;
+                if (att >= 1.0) ++inner;
+                else if (att > 0.0) ++falloff;
+                else ++outside;
+                maxErr = std::max(maxErr, std::abs(L - expected) / (rho / PI * 2.0));
+            }
+    EXPECT_GT(inner, 20);
+    EXPECT_GT(falloff, 20);
+    EXPECT_GT(outside, 20);
+    EXPECT_LT(maxErr, 2e-3);  // relative to the peak radiance scale rho/pi * I / 1 m^2
+    std::printf("  inner %d, falloff %d, outside %d voxels; max err %.2e\n", inner, falloff, outside, maxErr);
 }
 
 TEST(Inject, BouncesAddBoundedEnergy) {
