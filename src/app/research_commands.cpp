@@ -1,17 +1,101 @@
 #include "app/commands.h"
 
-#include "render/params.h"
-#include "render/plan.h"
+#include "app/render_options.h"
+#include "eval/comparison.h"
+#include "gl/context.h"
 #include "render/method_params.h"
+#include "render/params.h"
+#include "scene/gltf_loader.h"
 
+#include <iostream>
+#include <memory>
 #include <sstream>
+#include <unistd.h>
 
 namespace vct {
 
-void registerResearchCommands(CLI::App& app) { (void)app; }
+namespace {
+
+struct CompareOptions {
+    RenderOptions render;  // scene, camera, size, radius, seed, voxel-res, sky, params, gl-device
+    std::string outDir;
+    std::string aoMethods = "ssao-crytek,ssao-hemisphere,ssao-horizon,alchemy,hbao,gtao,vct";
+    std::string giMethods;
+    int refSpp = 256;
+    int runs = 3;
+};
+
+CompareOptions gCompare;
+CLI::App* gCompareCmd = nullptr;
+
+// Options that `render` and the research commands share.
+void addViewOptions(CLI::App* cmd, RenderOptions& o) {
+    cmd->add_option("--size", o.size, "image size W or WxH")->capture_default_str();
+    cmd->add_option("--camera", o.camera, "camera NAME or INDEX from the file");
+    cmd->add_option("--eye", o.eye, "camera position X,Y,Z (with --target)");
+    cmd->add_option("--target", o.target, "camera target X,Y,Z (with --eye)");
+    cmd->add_option("--fov", o.fovDeg, "vertical field of view in degrees")->capture_default_str();
+    cmd->add_option("--radius", o.radius, "AO radius R in world units")->capture_default_str();
+    cmd->add_option("--seed", o.seed, "seed of every random choice")->capture_default_str();
+    cmd->add_option("--voxel-res", o.voxelRes, "voxels along the grid's longest axis")->capture_default_str();
+    cmd->add_option("--sky", o.sky, "uniform sky radiance")->capture_default_str();
+    cmd->add_option("--param", o.params, "parameter KEY=VALUE shared by every method (repeatable)");
+    cmd->add_option("--gl-device", o.glDevice, "auto, surfaceless or device")->capture_default_str();
+}
+
+void progressLine(const std::string& line) {
+    if (isatty(STDERR_FILENO)) std::cerr << "vct compare: " << line << "\n";
+}
+
+int runCompare(const CompareOptions& o) {
+    Scene scene = loadScene(o.render.scenePath);
+    ComparisonSettings s;
+    s.base = makeRenderRequest(o.render, scene);
+    s.referenceSpp = o.refSpp;
+    s.timingRuns = o.runs;
+    s.outputDir = o.outDir;
+    s.variants = parseMethodList(o.aoMethods, "ao");
+    auto gi = parseMethodList(o.giMethods, "gi");
+    s.variants.insert(s.variants.end(), gi.begin(), gi.end());
+    if (s.variants.empty()) throw std::invalid_argument("--methods and --gi name no method to compare");
+    if (o.refSpp < 1) throw std::invalid_argument("--ref-spp must be >= 1");
+    if (o.runs < 1 || o.runs > 100) throw std::invalid_argument("--runs must be in [1, 100]");
+    s.progress = progressLine;
+    GlContext::shared(parseGlDevice(o.render.glDevice));
+    nlohmann::json doc = runComparison(scene, s);
+    std::cout << "label                                   time_ms     rmse   roi_rmse\n";
+    for (const auto& r : doc["records"]) {
+        char line[256];
+        std::snprintf(line, sizeof line, "%-36s %10.2f %8.4f %10s\n", r["label"].get<std::string>().c_str(),
+                      r["time_ms"].get<double>(), r["rmse"].get<double>(),
+                      r["roi_rmse"].is_null() ? "-" : std::to_string(r["roi_rmse"].get<double>()).c_str());
+        std::cout << line;
+    }
+    std::cout << "wrote " << o.outDir << "/results.json and results.csv\n";
+    return 0;
+}
+
+}  // namespace
+
+void registerResearchCommands(CLI::App& app) {
+    CompareOptions& o = gCompare;
+    gCompareCmd = app.add_subcommand("compare", "Score methods against the ray-traced reference on one view");
+    gCompareCmd->add_option("scene", o.render.scenePath, "glTF 2.0 scene")->required();
+    gCompareCmd->add_option("-o,--output", o.outDir, "output directory (images, results.json, results.csv)")
+        ->required();
+    gCompareCmd->add_option("--methods", o.aoMethods,
+                            "AO methods, comma-separated; parameters in brackets: gtao[gtao.preset=low;blur=0]")
+        ->capture_default_str();
+    gCompareCmd->add_option("--gi", o.giMethods, "GI methods to score against the path tracer (e.g. vct)");
+    gCompareCmd->add_option("--ref-spp", o.refSpp, "reference samples per pixel")->capture_default_str();
+    gCompareCmd->add_option("--runs", o.runs, "timed runs after a warm-up (time_ms is their median)")
+        ->capture_default_str();
+    addViewOptions(gCompareCmd, o.render);
+}
 
 int runResearchCommand(CLI::App& app) {
     (void)app;
+    if (gCompareCmd && *gCompareCmd) return runCompare(gCompare);
     return 2;
 }
 

@@ -26,6 +26,7 @@ struct RenderRequest {
     float sky = 1.f;                         // uniform sky radiance
     ParamMap params;                         // --param KEY=VALUE
     bool prune = true;                       // false: run every applicable pass (for tests)
+    bool reuseVoxels = true;                 // false: voxelize anew (timing a method's whole cost)
 };
 
 // Every AOV name the renderer knows, with its channel count.

@@ -490,7 +490,9 @@ TEST(Inject, SpotLightFollowsInverseSquareAndGltfFalloff) {
     EXPECT_GT(inner, 20);
     EXPECT_GT(falloff, 20);
     EXPECT_GT(outside, 20);
-    EXPECT_LT(maxErr, 2e-3);  // relative to the peak radiance scale rho/pi * I / 1 m^2
+    // Relative to the radiance scale rho/pi * I / (1 m)^2; observed 1.7e-3, about one
+    // half-float step at the peak (0.5) where radiance is stored in RGBA16F.
+    EXPECT_LT(maxErr, 3e-3);
     std::printf("  inner %d, falloff %d, outside %d voxels; max err %.2e\n", inner, falloff, outside, maxErr);
 }
 

@@ -1,0 +1,318 @@
+#include "eval/comparison.h"
+
+#include "eval/error_map.h"
+#include "eval/image_io.h"
+#include "eval/metrics.h"
+#include "eval/roi.h"
+#include "gl/context.h"
+#include "render/renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+namespace vct {
+
+std::string MethodVariant::label() const {
+    if (params.empty()) return method;
+    std::string s = method + "[";
+    bool first = true;
+    for (const auto& [k, v] : params) {
+        s += (first ? "" : ";") + k + "=" + v;
+        first = false;
+    }
+    return s + "]";
+}
+
+std::string MethodVariant::fileStem() const {
+    std::string s = kind + "_" + label();
+    for (char& c : s)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.' || c == '_')) c = '_';
+    return s;
+}
+
+std::vector<MethodVariant> parseMethodList(const std::string& text, const std::string& kind) {
+    std::vector<MethodVariant> out;
+    std::string item;
+    int depth = 0;
+    auto flush = [&] {
+        if (item.empty()) return;
+        MethodVariant v;
+        v.kind = kind;
+        size_t b = item.find('[');
+        v.method = item.substr(0, b);
+        if (b != std::string::npos) {
+            if (item.back() != ']') throw std::invalid_argument("method '" + item + "': missing ']'");
+            std::stringstream ss(item.substr(b + 1, item.size() - b - 2));
+            std::string kv;
+            while (std::getline(ss, kv, ';')) {
+                size_t eq = kv.find('=');
+                if (eq == std::string::npos || eq == 0)
+                    throw std::invalid_argument("method '" + item + "': expected KEY=VALUE, got '" + kv + "'");
+                v.params[kv.substr(0, eq)] = kv.substr(eq + 1);
+            }
+        }
+        const auto& known = kind == "gi" ? giMethods() : aoMethods();
+        if (std::find(known.begin(), known.end(), v.method) == known.end() || v.method == "none" ||
+            v.method == "reference")
+            throw std::invalid_argument("method '" + v.method + "' is not a " + kind + " method to compare");
+        out.push_back(v);
+        item.clear();
+    };
+    for (char c : text) {
+        if (c == '[') ++depth;
+        if (c == ']') --depth;
+        if (c == ',' && depth == 0) flush();
+        else item += c;
+    }
+    flush();
+    return out;
+}
+
+namespace {
+
+Image validMaskFromDepth(const Image& depth) {
+    Image m(depth.width, depth.height, 1);
+    for (size_t i = 0; i < m.pixels.size(); ++i) m.pixels[i] = depth.pixels[i] > 0.f ? 1.f : 0.f;
+    return m;
+}
+
+Image maskAnd(const Image& a, const Image& b, bool negateB) {
+    Image m(a.width, a.height, 1);
+    for (size_t i = 0; i < m.pixels.size(); ++i) {
+        bool inB = b.pixels[i] > 0.5f;
+        m.pixels[i] = (a.pixels[i] > 0.5f && (negateB ? !inB : inB)) ? 1.f : 0.f;
+    }
+    return m;
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+double rmsOf(const Image& img, const Image& mask) {
+    double s = 0;
+    size_t n = 0;
+    for (size_t i = 0; i < mask.pixels.size(); ++i)
+        if (mask.pixels[i] > 0.5f)
+            for (int c = 0; c < img.channels; ++c, ++n) s += double(img.pixels[i * img.channels + c]) * img.pixels[i * img.channels + c];
+    return n ? std::sqrt(s / n) : 0.0;
+}
+
+nlohmann::json metricsJson(const ErrorMetrics& m) {
+    return {{"rmse", m.rmse}, {"mae", m.mae}, {"bias", m.bias}, {"max_abs", m.maxAbs},
+            {"psnr", m.psnr}, {"ssim", m.ssim}, {"pixels", m.pixelCount}};
+}
+
+Scene withoutOffscreenOccluders(const Scene& scene) {
+    Scene s = scene;
+    s.triangles.clear();
+    s.triangleMaterial.clear();
+    s.triangleOffscreen.clear();
+    for (size_t t = 0; t < scene.triangles.size(); ++t) {
+        if (t < scene.triangleOffscreen.size() && scene.triangleOffscreen[t]) continue;
+        s.triangles.push_back(scene.triangles[t]);
+        s.triangleMaterial.push_back(scene.triangleMaterial[t]);
+        s.triangleOffscreen.push_back(0);
+    }
+    return s;
+}
+
+// Displayable 8-bit versions: AO as stored, radiance through sRGB.
+Image displayable(const Image& img, bool radiance) {
+    if (radiance) return toneMapToSrgb(img, 0.f);
+    Image out = img;
+    for (float& v : out.pixels) v = std::clamp(v, 0.f, 1.f);
+    return out;
+}
+
+}  // namespace
+
+nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
+    auto say = [&](const std::string& line) {
+        if (s.progress) s.progress(line);
+    };
+    namespace fs = std::filesystem;
+    const bool write = !s.outputDir.empty();
+    if (write) fs::create_directories(s.outputDir);
+    auto path = [&](const std::string& name) { return (fs::path(s.outputDir) / name).string(); };
+    const bool anyAo = std::any_of(s.variants.begin(), s.variants.end(), [](auto& v) { return v.kind == "ao"; });
+    const bool anyGi = std::any_of(s.variants.begin(), s.variants.end(), [](auto& v) { return v.kind == "gi"; });
+
+    RenderSession session(scene);
+    nlohmann::json doc;
+    const Camera& cam = s.base.camera;
+    doc["scene"] = scene.path;
+    doc["camera"] = {{"eye", {cam.eye.x, cam.eye.y, cam.eye.z}},
+                     {"target", {cam.target.x, cam.target.y, cam.target.z}},
+                     {"fov_deg", cam.yfov * 180.0 / M_PI}};
+    doc["width"] = s.base.width;
+    doc["height"] = s.base.height;
+    doc["radius"] = s.base.radius;
+    doc["sky"] = s.base.sky;
+    doc["voxel_res"] = s.base.voxelRes;
+    doc["seed"] = s.base.seed;
+    doc["gl_renderer"] = GlContext::shared().info().renderer;
+    doc["cores"] = std::thread::hardware_concurrency();
+    doc["timing_runs"] = s.timingRuns;
+
+    // The reference at the G-buffer's points, and the valid (non-sky) mask.
+    RenderRequest ref = s.base;
+    ref.ao = anyAo ? "reference" : "none";
+    ref.gi = "none";
+    ref.spp = s.referenceSpp;
+    ref.aovs = {"depth"};
+    if (anyAo) ref.aovs.insert(ref.aovs.end(), {"ao", "ao_stderr"});
+    say("reference AO: " + std::to_string(s.referenceSpp) + " spp");
+    RenderResult refResult = session.render(ref);
+    const Image valid = validMaskFromDepth(refResult.aovs.at("depth"));
+    nlohmann::json refJson = {{"spp", s.referenceSpp}};
+    Image refAo, refAoStderr, roi, nonRoi, refGi, refGiStderr;
+    if (anyAo) {
+        refAo = refResult.aovs.at("ao");
+        refAoStderr = refResult.aovs.at("ao_stderr");
+        refJson["ao_mean_stderr"] = refResult.extra["reference_ao"]["mean_stderr"];
+        refJson["ao_rms_pixel_stderr"] = rmsOf(refAoStderr, valid);
+        refJson["ao_time_ms"] = refResult.totalMs;
+        if (write) {
+            writeImage(path("reference_ao.exr"), refAo, {"ao"});
+            writeImage(path("reference_ao_stderr.exr"), refAoStderr, {"ao_stderr"});
+            writeImage(path("reference_ao.png"), displayable(refAo, false));
+        }
+    }
+    const SceneFeatures features = session.features();
+    doc["offscreen_occluders"] = features.hasOffscreenOccluders;
+    if (anyAo && features.hasOffscreenOccluders) {
+        // ROI: where the reference AO changes when the off-screen occluders are removed
+        // (by more than 3 sigma of the two estimates' combined noise).
+        say("reference AO without the off-screen occluders (ROI)");
+        Scene without = withoutOffscreenOccluders(scene);
+        RenderSession other(without);
+        RenderRequest r2 = ref;
+        r2.aovs = {"ao", "ao_stderr"};
+        r2.seed = ref.seed + 1;
+        RenderResult res2 = other.render(r2);
+        roi = maskAnd(valid, deriveRoiMask(refAo, res2.aovs.at("ao"), refAoStderr, res2.aovs.at("ao_stderr"), 3.0), false);
+        nonRoi = maskAnd(valid, roi, true);
+        doc["roi_pixels"] = countMask(roi);
+        if (write) writeImage(path("roi.png"), roi);
+    } else {
+        doc["roi_pixels"] = nullptr;
+    }
+    if (anyGi) {
+        RenderRequest g = s.base;
+        g.ao = "none";
+        g.gi = "reference";
+        g.spp = s.referenceSpp;
+        g.aovs = {"indirect", "indirect_stderr"};
+        say("reference GI: " + std::to_string(s.referenceSpp) + " spp");
+        RenderResult gr = session.render(g);
+        refGi = gr.aovs.at("indirect");
+        refGiStderr = gr.aovs.at("indirect_stderr");
+        refJson["gi_mean_stderr"] = gr.extra["reference_gi"]["mean_stderr"];
+        refJson["gi_rms_pixel_stderr"] = rmsOf(refGiStderr, valid);
+        refJson["gi_time_ms"] = gr.totalMs;
+        refJson["gi_bounces"] = gr.extra["reference_gi"]["bounces"];
+        if (write) {
+            writeImage(path("reference_gi.exr"), refGi, {"R", "G", "B"});
+            writeImage(path("reference_gi_stderr.exr"), refGiStderr, {"indirect_stderr"});
+            writeImage(path("reference_gi.png"), displayable(refGi, true));
+        }
+    }
+    doc["reference"] = refJson;
+    if (write) writeImage(path("error_legend.png"), falseColorLegend(256, 16, 1.0));
+
+    doc["records"] = nlohmann::json::array();
+    for (const MethodVariant& v : s.variants) {
+        say(v.kind + " " + v.label());
+        RenderRequest req = s.base;
+        for (const auto& [k, val] : v.params) req.params.set(k, val);
+        if (v.kind == "ao") { req.ao = v.method; req.gi = "none"; req.aovs = {"ao"}; }
+        else { req.ao = "none"; req.gi = v.method; req.aovs = {"indirect"}; }
+        RenderResult first = session.render(req);  // warm-up; its image is the one scored
+        std::vector<double> totals;
+        std::map<std::string, std::vector<double>> passTimes;
+        for (int run = 0; run < s.timingRuns; ++run) {
+            RenderRequest timed = req;
+            timed.reuseVoxels = false;  // the method's own voxelization counts in its time
+            RenderResult r = session.render(timed);
+            totals.push_back(r.totalMs);
+            for (const auto& p : r.passes) passTimes[p.name].push_back(p.wallMs);
+        }
+        const bool isAo = v.kind == "ao";
+        const Image& est = first.aovs.at(isAo ? "ao" : "indirect");
+        const Image& truth = isAo ? refAo : refGi;
+        double peak = 1.0;
+        if (!isAo) {
+            peak = 1e-30;
+            for (size_t i = 0; i < valid.pixels.size(); ++i)
+                if (valid.pixels[i] > 0.5f)
+                    for (int c = 0; c < 3; ++c) peak = std::max(peak, double(truth.pixels[3 * i + c]));
+        }
+        nlohmann::json rec;
+        rec["label"] = v.label();
+        rec["kind"] = v.kind;
+        rec["method"] = v.method;
+        rec["params"] = v.params;
+        rec["time_ms"] = median(totals);
+        nlohmann::json passes = nlohmann::json::object();
+        for (const auto& [name, t] : passTimes) passes[name] = median(t);
+        rec["passes"] = passes;
+        ErrorMetrics all = computeErrorMetrics(est, truth, &valid, -1, peak);
+        nlohmann::json m = metricsJson(all);
+        for (auto it = m.begin(); it != m.end(); ++it) rec[it.key()] = it.value();
+        if (!roi.empty() && isAo) {
+            rec["roi_rmse"] = computeErrorMetrics(est, truth, &roi, -1, peak).rmse;
+            rec["nonroi_rmse"] = computeErrorMetrics(est, truth, &nonRoi, -1, peak).rmse;
+        } else {
+            rec["roi_rmse"] = nullptr;
+            rec["nonroi_rmse"] = nullptr;
+        }
+        rec["extra"] = first.extra;
+        if (write && s.writeImages) {
+            const std::string stem = v.fileStem();
+            writeImage(path(stem + ".exr"), est, isAo ? std::vector<std::string>{"ao"} : std::vector<std::string>{"R", "G", "B"});
+            writeImage(path(stem + ".png"), displayable(est, !isAo));
+            const double scale = isAo ? 0.25 : 0.25 * std::max(1e-6, imageMean(truth, &valid, -1));
+            writeImage(path(stem + "_error.png"), falseColorError(est, truth, scale, &valid));
+            rec["images"] = {{"exr", stem + ".exr"}, {"png", stem + ".png"}, {"error_png", stem + "_error.png"},
+                             {"error_scale", scale}};
+        }
+        doc["records"].push_back(rec);
+    }
+    if (write) {
+        writeImage(path("valid.png"), valid);
+        const std::string json = doc.dump(2) + "\n";
+        std::ofstream(path("results.json.tmp")) << json;
+        fs::rename(path("results.json.tmp"), path("results.json"));
+        std::ofstream(path("results.csv.tmp")) << resultsCsv(doc);
+        fs::rename(path("results.csv.tmp"), path("results.csv"));
+    }
+    return doc;
+}
+
+std::string resultsCsv(const nlohmann::json& results) {
+    std::ostringstream out;
+    out << "scene,label,kind,method,params,time_ms,rmse,mae,bias,max_abs,psnr,ssim,roi_rmse,nonroi_rmse\n";
+    auto num = [](const nlohmann::json& j) { return j.is_null() ? std::string() : j.dump(); };
+    for (const auto& r : results["records"]) {
+        std::string params;
+        for (auto it = r["params"].begin(); it != r["params"].end(); ++it)
+            params += (params.empty() ? "" : ";") + it.key() + "=" + it.value().get<std::string>();
+        out << '"' << results["scene"].get<std::string>() << "\",\"" << r["label"].get<std::string>() << "\","
+            << r["kind"].get<std::string>() << ',' << r["method"].get<std::string>() << ",\"" << params << "\","
+            << num(r["time_ms"]) << ',' << num(r["rmse"]) << ',' << num(r["mae"]) << ',' << num(r["bias"]) << ','
+            << num(r["max_abs"]) << ',' << num(r["psnr"]) << ',' << num(r["ssim"]) << ',' << num(r["roi_rmse"]) << ','
+            << num(r["nonroi_rmse"]) << '\n';
+    }
+    return out.str();
+}
+
+}  // namespace vct

@@ -1,0 +1,51 @@
+// One comparison: every method variant rendered on one scene, camera and G-buffer (and
+// one voxelization), scored against the ray-traced reference on valid (non-sky) pixels
+// and, where the scene marks off-screen occluders, inside and outside the derived ROI
+// (BRIEF sections 4 and 5). Used by `vct compare` and, case by case, by `vct sweep`.
+#pragma once
+
+#include "render/request.h"
+#include "scene/scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace vct {
+
+struct MethodVariant {
+    std::string kind = "ao";  // "ao" (scored on A) or "gi" (scored on indirect radiance)
+    std::string method;       // an --ao or --gi method
+    std::map<std::string, std::string> params;  // --param overrides for this variant
+    // "gtao" or "gtao[gtao.preset=low;blur=0]": unique within a comparison.
+    std::string label() const;
+    // The label made safe for file names.
+    std::string fileStem() const;
+};
+
+// Parses "gtao,hbao[hbao.steps=8;hbao.directions=4],vct" (commas inside brackets belong to
+// the variant). Throws std::invalid_argument naming the bad entry.
+std::vector<MethodVariant> parseMethodList(const std::string& text, const std::string& kind);
+
+struct ComparisonSettings {
+    RenderRequest base;          // camera, size, radius, seed, voxel resolution, sky, shared params
+    int referenceSpp = 256;      // samples per pixel of the reference (AO and GI)
+    int timingRuns = 3;          // timed runs after one warm-up; time_ms is their median
+    std::vector<MethodVariant> variants;
+    std::string outputDir;       // empty: write nothing (results only)
+    bool writeImages = true;
+    std::function<void(const std::string&)> progress;  // called with a line per step (may be empty)
+};
+
+// Runs the comparison and returns the results document (the content of results.json):
+// top-level scene/camera/resolution/radius/renderer/cores/reference, plus "records".
+// Writes images, results.json and results.csv into outputDir when set.
+nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& settings);
+
+// The CSV form of a results document's records (one line per record, header first).
+std::string resultsCsv(const nlohmann::json& results);
+
+}  // namespace vct
