@@ -57,10 +57,12 @@ vec4 cone_sampleAniso(vec3 tc, vec3 d, float lod) {
 vec4 cone_sampleGrid(vec3 p, vec3 d, float lod) {
     vec3 tc = p / u.gridResolution.xyz;
 #if CONE_ANISO
-    if (lod >= 1.0) return cone_sampleAniso(tc, d, lod - 1.0);
+    vec4 directional = cone_sampleAniso(tc, d, max(lod - 1.0, 0.0));
     // Between the base level and the first directional level: blend as trilinear
-    // filtering blends two mip levels.
-    return mix(cone_sampleIso(tc, 0.0), cone_sampleAniso(tc, d, 0.0), lod);
+    // filtering blends two mip levels. (One directional fetch on both paths: on SIMD
+    // hardware and llvmpipe a divergent branch would run both.)
+    if (lod < 1.0) directional = mix(cone_sampleIso(tc, 0.0), directional, lod);
+    return directional;
 #else
     return cone_sampleIso(tc, lod);
 #endif

@@ -1,6 +1,8 @@
 #include "render/method_passes.h"
 
 #include "ao/screen_space_ao.h"
+#include "cone/cone_trace.h"
+#include "voxelize/voxelize.h"
 #include "gl/context.h"
 #include "gl/readback.h"
 #include "reference/embree_scene.h"
@@ -13,6 +15,8 @@ namespace vct {
 
 struct MethodCache::Impl {
     std::unique_ptr<EmbreeScene> embree;  // built on first use by a reference pass
+    // Voxel grids keyed by everything that shapes them (resolution, injection, bounces, ...).
+    std::map<std::string, std::shared_ptr<VoxelGrid>> grids;
 };
 
 namespace {
@@ -97,13 +101,50 @@ void runReferenceGi(const RenderRequest& r, const Scene& scene, const View& view
                              {"rays_per_second", gi.raysPerSecond}, {"bounces", settings.bounces}};
 }
 
+// A key of everything a grid depends on: two requests with the same key share one grid.
+std::string gridKey(const RenderRequest& r, bool inject, bool aniso) {
+    std::string k = std::to_string(r.voxelRes) + (inject ? "+inject" : "") + (aniso ? "+aniso" : "");
+    for (const auto& [key, value] : r.params.values())
+        if (key.rfind("vct.voxel.", 0) == 0 || key.rfind("vct.inject.", 0) == 0 || key.rfind("vct.bounce", 0) == 0)
+            k += ";" + key + "=" + value;
+    if (inject) k += ";sky=" + std::to_string(r.sky);
+    return k;
+}
+
+// Voxelize, inject and filter as the plan says, or reuse the session's grid.
+std::shared_ptr<VoxelGrid> voxelGridFor(const RenderPlan& plan, const RenderRequest& r, const Scene& scene,
+                                        const GpuScene& gpu, bool aniso, PassTimer& timer, MethodCache& cache,
+                                        std::map<std::string, int>& runCounts) {
+    if (r.backend != "gl")
+        throw std::invalid_argument("--backend " + r.backend + " is not implemented yet (use --backend gl)");
+    const bool inject = plan.runs("inject");
+    const std::string key = gridKey(r, inject, aniso);
+    auto& grids = cacheOf(cache).grids;
+    if (r.reuseVoxels) {
+        auto it = grids.find(key);
+        if (it != grids.end()) return it->second;
+    }
+    GlContext& gl = GlContext::shared();
+    auto grid = std::make_shared<VoxelGrid>(voxelizeScene(gpu, scene.bounds, r.voxelRes, r.params, timer));
+    gl.checkErrors("voxelize");
+    runCounts["voxelize"]++;
+    if (inject) {
+        injectRadiance(*grid, gpu, scene, r.sky, r.params, timer);
+        gl.checkErrors("inject");
+        runCounts["inject"]++;
+    }
+    buildMips(*grid, aniso, timer);
+    gl.checkErrors("mips");
+    runCounts["mips"]++;
+    if (r.reuseVoxels) grids[key] = grid;
+    return grid;
+}
+
 }  // namespace
 
 MethodOutputs runMethodPasses(const RenderPlan& plan, const RenderRequest& request, const Scene& scene,
                               const GpuScene& gpu, const GBuffer* gbuffer, const View& view, PassTimer& timer,
                               MethodCache& cache, std::map<std::string, int>& runCounts, nlohmann::json& extra) {
-    (void)gpu;
-    (void)runCounts;
     MethodOutputs out;
     GlContext& gl = GlContext::shared();
     if (plan.runs("ssao")) {
@@ -112,8 +153,40 @@ MethodOutputs runMethodPasses(const RenderPlan& plan, const RenderRequest& reque
     }
     if (plan.runs("reference_ao")) runReferenceAo(request, scene, *gbuffer, view, timer, cache, out, extra);
     if (plan.runs("reference_gi")) runReferenceGi(request, scene, view, timer, cache, out, extra);
-    for (const char* pass : {"voxelize", "cone_ao", "cone_gi"})
-        if (plan.runs(pass)) throw std::invalid_argument(std::string("pass '") + pass + "' is not implemented yet");
+    if (plan.runs("voxelize")) {
+        const ConeSettings cone = readConeSettings(request.params);
+        std::shared_ptr<VoxelGrid> grid =
+            voxelGridFor(plan, request, scene, gpu, cone.anisotropic, timer, cache, runCounts);
+        extra["voxels"] = {{"resolution", {grid->resolution.x, grid->resolution.y, grid->resolution.z}},
+                           {"voxel_size", grid->voxelSize},
+                           {"occupied", grid->occupiedVoxels},
+                           {"memory_bytes", grid->memoryBytes},
+                           {"dense_voxels", size_t(grid->resolution.x) * grid->resolution.y * grid->resolution.z}};
+        if (plan.runs("cone_ao")) {
+            out.ao = coneTraceAO(*grid, *gbuffer, view, request.radius, cone, timer);
+            gl.checkErrors("cone_ao");
+        }
+        if (plan.runs("cone_gi")) {
+            out.indirect = coneTraceGI(*grid, *gbuffer, view, request.sky, cone, timer);
+            gl.checkErrors("cone_gi");
+        }
+        if (plan.runs("voxel_view")) {
+            const int level = request.params.getInt("vct.view.level", 0, 0, 16, "mip level shown by voxel_* AOVs");
+            for (const std::string& aov : request.aovs) {
+                if (aov.rfind("voxel_", 0) != 0) continue;
+                const std::string what = aov.substr(6);
+                GlTexture t = rayMarchVoxels(*grid, view, what, level, timer);
+                gl.checkErrors("voxel_view");
+                Image rgba = readTexture2D(t.id(), view.width, view.height, 4);
+                const int channels = what == "opacity" ? 1 : 3;
+                Image img(view.width, view.height, channels);
+                for (size_t i = 0; i < size_t(view.width) * view.height; ++i)
+                    for (int c = 0; c < channels; ++c)
+                        img.pixels[i * channels + c] = rgba.pixels[4 * i + (what == "opacity" ? 3 : c)];
+                out.voxelViews[aov] = std::move(img);
+            }
+        }
+    }
     return out;
 }
 

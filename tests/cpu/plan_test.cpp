@@ -86,7 +86,8 @@ TEST(Plan, GiReplacesAmbientAoInBeauty) {
     RenderPlan both = planRender(litScene(), request("vct", "vct", {"beauty", "ao"}));
     EXPECT_TRUE(both.runs("cone_ao"));
     // Both cone passes share one voxelization in the plan.
-    EXPECT_EQ(std::count(both.runNames().begin(), both.runNames().end(), "voxelize"), 1);
+    const std::vector<std::string> names = both.runNames();
+    EXPECT_EQ(std::count(names.begin(), names.end(), "voxelize"), 1);
 }
 
 TEST(Plan, PathTracedGiTakesOverDirectAndComposite) {

@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <random>
 #include <vector>
 
@@ -642,6 +643,7 @@ TEST(ConeTrace, DISABLED_Timing512) {
     for (bool aniso : {false, true})
         for (int cones : {6, 16}) {
             ConeSettings c = settingsFor(cones, aniso);
+            if (const char* pl = std::getenv("CONE_PLANE_LIMIT")) c.planeLimit = std::atoi(pl) != 0;
             PassTimer timer;
             for (int i = 0; i < 3; ++i) {
                 coneTraceAO(grid, gb, view, 16.f * s.voxelSize, c, timer);
