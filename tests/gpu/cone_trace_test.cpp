@@ -507,10 +507,11 @@ TEST(ConeTrace, EmissiveShellLightsTheRoom) {
                 std::printf("[ %s shell ] aniso %d cones %2d: GI / (albedo Le) =", k.name, aniso, cones);
                 for (size_t i = 0; i < pts.size(); ++i) {
                     std::printf(" %.4f", pixel(gi, i, 0) / (albedo.x * Le));
-                    if (k.thickness > 50.f || aniso)
-                        for (int ch = 0; ch < 3; ++ch)
-                            EXPECT_NEAR(pixel(gi, i, ch), albedo[ch] * Le, k.tolerance * albedo[ch] * Le)
-                                << k.name << " aniso " << aniso << " cones " << cones << " point " << i << " ch " << ch;
+                    if (k.thickness < 50.f && !aniso) continue;  // isotropic mips leak (see ThinWalls...)
+                    for (int ch = 0; ch < 3; ++ch) {
+                        EXPECT_NEAR(pixel(gi, i, ch), albedo[ch] * Le, k.tolerance * albedo[ch] * Le)
+                            << k.name << " aniso " << aniso << " cones " << cones << " point " << i << " ch " << ch;
+                    }
                 }
                 std::printf("\n");
             }

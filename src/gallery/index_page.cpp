@@ -1,0 +1,166 @@
+// index.html: a scenes x methods grid of thumbnails with time and error, whose method columns
+// can be ordered by mean error rank or mean time rank, and a sortable table of every record.
+#include "gallery/html.h"
+#include "gallery/site_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace vct {
+
+namespace {
+
+struct Column {
+    std::string key;    // "ao: gtao"
+    double errorRankSum = 0, timeRankSum = 0;
+    int rows = 0;
+    int order = 0;      // first appearance
+};
+
+// Rank (0 = best) of values[i] among the finite values of a row, normalized to [0, 1].
+std::vector<double> normalizedRanks(const std::vector<double>& values) {
+    std::vector<double> ranks(values.size(), std::nan(""));
+    std::vector<size_t> idx;
+    for (size_t i = 0; i < values.size(); ++i)
+        if (std::isfinite(values[i])) idx.push_back(i);
+    std::sort(idx.begin(), idx.end(), [&](size_t a, size_t b) { return values[a] < values[b]; });
+    for (size_t k = 0; k < idx.size(); ++k) ranks[idx[k]] = idx.size() > 1 ? double(k) / (idx.size() - 1) : 0.0;
+    return ranks;
+}
+
+std::string numAttr(double v) { return std::isfinite(v) ? formatNumber(v, 9) : ""; }
+
+}  // namespace
+
+std::string indexPage(const std::vector<SiteCase>& cases, const std::string& title, const std::string& generated) {
+    bool anyGi = false, anyAo = false, anyRoi = false;
+    for (const auto& c : cases)
+        for (const auto& r : c.input.results["records"]) (r.value("kind", "ao") == "gi" ? anyGi : anyAo) = true;
+    const bool withKind = anyGi && anyAo;
+    // Columns and their mean ranks (error: rmse; time: time_ms) over the rows that have them.
+    std::vector<Column> columns;
+    std::map<std::string, size_t> columnOf;
+    for (const auto& c : cases) {
+        const auto& records = c.input.results["records"];
+        std::vector<double> err, time;
+        std::vector<size_t> cols;
+        for (const auto& r : records) {
+            const std::string key = recordLabel(r, withKind);
+            if (!columnOf.count(key)) {
+                columnOf[key] = columns.size();
+                columns.push_back({key, 0, 0, 0, int(columns.size())});
+            }
+            cols.push_back(columnOf[key]);
+            err.push_back(jsonNumber(r, "rmse"));
+            time.push_back(jsonNumber(r, "time_ms"));
+        }
+        const auto er = normalizedRanks(err), tr = normalizedRanks(time);
+        for (size_t i = 0; i < cols.size(); ++i) {
+            Column& col = columns[cols[i]];
+            if (std::isfinite(er[i])) col.errorRankSum += er[i];
+            if (std::isfinite(tr[i])) col.timeRankSum += tr[i];
+            col.rows++;
+        }
+        if (!c.roiOutline.empty()) anyRoi = true;
+    }
+
+    std::ostringstream s;
+    s << pageHead(title) << "<body class=\"index\">\n<header><h1>" << escapeHtml(title) << "</h1>\n<p>" << cases.size()
+      << " case(s), " << columns.size()
+      << " method variant(s). Each thumbnail links to its comparison page; numbers are the median time per "
+         "frame and the RMSE against the ray-traced reference on valid pixels"
+      << (anyRoi ? " (ROI: RMSE inside the region darkened by off-screen occluders)" : "") << ".</p>\n</header>\n";
+
+    // The grid.
+    s << "<section>\n<h2>Scenes &times; methods</h2>\n<div class=\"sortbar\">Order method columns by: "
+      << "<button type=\"button\" data-order=\"run\" class=\"active\">run order</button> "
+      << "<button type=\"button\" data-order=\"error\">error (mean rank)</button> "
+      << "<button type=\"button\" data-order=\"time\">time (mean rank)</button></div>\n"
+      << "<div class=\"grid-wrap\"><table class=\"grid\" id=\"grid\">\n<thead><tr><th class=\"scene-col\">scene / "
+         "reference</th>";
+    for (const Column& col : columns) {
+        const double n = std::max(1, col.rows);
+        s << "<th data-col=\"" << col.order << "\" data-run=\"" << col.order << "\" data-error=\""
+          << formatNumber(col.errorRankSum / n, 6) << "\" data-time=\"" << formatNumber(col.timeRankSum / n, 6)
+          << "\">" << escapeHtml(col.key) << "</th>";
+    }
+    s << "</tr></thead>\n<tbody>\n";
+    for (const auto& c : cases) {
+        const auto& records = c.input.results["records"];
+        s << "<tr><th class=\"scene-col\"><a href=\"" << encodeUrlPath(c.page) << "\">"
+          << escapeHtml(c.input.title) << "</a>";
+        for (const char* refId : {"reference_ao", "reference_gi"})
+            if (const SiteImage* ref = c.image(refId))
+                s << "<a class=\"thumb\" href=\"" << encodeUrlPath(c.page) << "#b=" << ref->id << "\"><img src=\""
+                  << encodeUrlPath(ref->thumb) << "\" alt=\"" << escapeHtml(ref->label) << "\" title=\""
+                  << escapeHtml(ref->label) << "\"></a>";
+        s << "<div class=\"small\">" << c.input.results.value("width", 0) << "&times;"
+          << c.input.results.value("height", 0) << ", R = " << formatNumber(jsonNumber(c.input.results, "radius"))
+          << "</div></th>";
+        // Best error and time of the row, for highlighting.
+        double bestErr = INFINITY, bestTime = INFINITY;
+        for (const auto& r : records) {
+            double e = jsonNumber(r, "rmse"), t = jsonNumber(r, "time_ms");
+            if (std::isfinite(e)) bestErr = std::min(bestErr, e);
+            if (std::isfinite(t)) bestTime = std::min(bestTime, t);
+        }
+        std::vector<std::string> cells(columns.size(), "");
+        for (size_t i = 0; i < records.size(); ++i) {
+            const auto& r = records[i];
+            const size_t col = columnOf[recordLabel(r, withKind)];
+            if (!cells[col].empty()) continue;  // same label twice in a case: the first one
+            std::ostringstream cell;
+            const double e = jsonNumber(r, "rmse"), t = jsonNumber(r, "time_ms"), roi = jsonNumber(r, "roi_rmse");
+            const int im = c.recordImage[i];
+            if (im >= 0) {
+                const SiteImage& img = c.images[im];
+                cell << "<a class=\"thumb\" href=\"" << encodeUrlPath(c.page) << "#b=" << img.id << "\"><img src=\""
+                     << encodeUrlPath(img.thumb) << "\" alt=\"" << escapeHtml(img.label) << "\" title=\""
+                     << escapeHtml(img.label) << "\"></a>";
+            }
+            cell << "<div class=\"nums\"><span class=\"time" << (t == bestTime ? " best" : "") << "\">"
+                 << formatMs(t) << "</span><span class=\"err" << (e == bestErr ? " best" : "") << "\">RMSE "
+                 << formatNumber(e) << "</span>";
+            if (std::isfinite(roi)) cell << "<span class=\"roi\">ROI " << formatNumber(roi) << "</span>";
+            cell << "</div>";
+            cells[col] = cell.str();
+        }
+        for (size_t k = 0; k < columns.size(); ++k)
+            s << "<td data-col=\"" << columns[k].order << "\">" << (cells[k].empty() ? "<span class=\"na\">&ndash;</span>" : cells[k])
+              << "</td>";
+        s << "</tr>\n";
+    }
+    s << "</tbody></table></div>\n</section>\n";
+
+    // Every record, sortable by any column.
+    s << "<section>\n<h2>All results</h2>\n<p class=\"small\">Click a column header to sort.</p>\n"
+      << "<table class=\"records sortable\" id=\"all-records\">\n<thead><tr>"
+      << "<th data-type=\"text\">case</th><th data-type=\"text\">kind</th><th data-type=\"text\">method</th>"
+      << "<th data-type=\"num\">time (ms)</th><th data-type=\"num\">RMSE</th><th data-type=\"num\">ROI RMSE</th>"
+      << "<th data-type=\"num\">non-ROI RMSE</th><th data-type=\"num\">MAE</th><th data-type=\"num\">bias</th>"
+      << "<th data-type=\"num\">PSNR (dB)</th><th data-type=\"num\">SSIM</th></tr></thead>\n<tbody>\n";
+    for (const auto& c : cases) {
+        const auto& records = c.input.results["records"];
+        for (size_t i = 0; i < records.size(); ++i) {
+            const auto& r = records[i];
+            const int im = c.recordImage[i];
+            const std::string href = encodeUrlPath(c.page) + (im >= 0 ? "#b=" + c.images[im].id : "");
+            s << "<tr><td><a href=\"" << href << "\">" << escapeHtml(c.input.title) << "</a></td><td>"
+              << escapeHtml(r.value("kind", "ao")) << "</td><td>" << escapeHtml(recordLabel(r, false)) << "</td>";
+            for (const char* key : {"time_ms", "rmse", "roi_rmse", "nonroi_rmse", "mae", "bias", "psnr", "ssim"}) {
+                const double v = jsonNumber(r, key);
+                s << "<td class=\"num\" data-value=\"" << numAttr(v) << "\">" << formatNumber(v) << "</td>";
+            }
+            s << "</tr>\n";
+        }
+    }
+    s << "</tbody></table>\n</section>\n";
+    std::vector<const SiteCase*> all;
+    for (const auto& c : cases) all.push_back(&c);
+    s << pageFooter(all, generated) << "</body>\n</html>\n";
+    return s.str();
+}
+
+}  // namespace vct

@@ -1,0 +1,39 @@
+// CPU voxel cone tracing over the sparse voxels (vdb/sparse_voxels.h): the same cone sets
+// (cone/cone_set.h), aperture, step, offset, max-alpha, opacity step correction, plane limit and
+// AO mapping as shaders/cone/cone_march.glsl, with the GL sampling reproduced on the VDB trees:
+// trilinear within a level (tools::BoxSampler at the GL texel centres of that level, zero
+// outside the occupied set) and linear between the two levels around the fractional level
+// (quadrilinear), the level clamped to [0, levels - 1]. Isotropic levels only: the
+// ConeSettings::anisotropic flag is ignored (the GPU path must run with vct.aniso=0 to compute
+// the same thing). TBB over points; the result does not depend on the thread count.
+#pragma once
+
+#include "cone/cone_settings.h"
+#include "vdb/sparse_voxels.h"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace vct {
+
+// One surface point per pixel, top row first (as the reference's SurfacePoint, plus albedo).
+struct SparsePoint {
+    glm::vec3 position{0.f};                // world space
+    glm::vec3 normal{0.f, 0.f, 1.f};        // shading normal (normalized here; 0 -> geomNormal)
+    glm::vec3 geomNormal{0.f, 0.f, 1.f};    // geometric normal on the viewer's side (cone offset, horizon)
+    glm::vec3 albedo{0.f};                  // linear albedo (GI only)
+    bool valid = false;                     // false = sky: AO 1, GI 0
+};
+
+// AO in [0, 1] per point (coneTraceAO): 1 - sum_c w_c alpha_c, cones limited to `radius`
+// (world units, >= 0). Reads the opacity levels.
+std::vector<float> sparseConeAO(const SparseVoxelScene& voxels, const std::vector<SparsePoint>& points,
+                                float radius, const ConeSettings& settings);
+
+// Indirect diffuse radiance per point (coneTraceGI): albedo * sum_c w_c (L_c + (1 - alpha_c) sky),
+// cones run until they leave the grid. Requires injected radiance. Invalid points give 0.
+std::vector<glm::vec3> sparseConeGI(const SparseVoxelScene& voxels, const std::vector<SparsePoint>& points,
+                                    float sky, const ConeSettings& settings);
+
+}  // namespace vct

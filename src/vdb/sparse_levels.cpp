@@ -1,0 +1,176 @@
+// Coarser levels of the sparse voxels (the CPU twin of shaders/voxelize/mip_iso.glsl with
+// mip_common.glsl's child ranges) and buildSparseVoxels, which runs the whole pipeline.
+//
+// A level-k voxel is active when any of its children is; its value is the mean of its
+// children over the full child block (2 per axis, 3 at the last voxel of an axis whose finer
+// size is odd, 1 where the finer size is already 1), with empty children counting as 0.
+// Opacity and premultiplied radiance average alike, so the box filter is exact. Each parent
+// sums its children in a fixed order: the levels are deterministic.
+#include "vdb/sparse_detail.h"
+
+#include <openvdb/tools/Prune.h>
+#include <openvdb/tree/LeafManager.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace vct {
+
+namespace vdbdetail {
+
+openvdb::math::Transform::Ptr levelTransform(const SparseVoxelScene& voxels, int level) {
+    const glm::ivec3 size = voxels.levelSize(level);
+    openvdb::math::Mat4d m = openvdb::math::Mat4d::identity();
+    for (int a = 0; a < 3; ++a) {
+        const double spacing = double(voxels.voxelSize) * double(voxels.resolution[a]) / double(size[a]);
+        m(a, a) = spacing;
+        m(3, a) = double(voxels.origin[a]) + 0.5 * spacing;  // row-vector convention: translation in row 3
+    }
+    return openvdb::math::Transform::createLinearTransform(m);
+}
+
+}  // namespace vdbdetail
+
+namespace {
+
+using namespace vdbdetail;
+
+// The child block [lo, hi] of parent v (mip_childRange).
+void childRange(const openvdb::Coord& v, const glm::ivec3& src, const glm::ivec3& dst, openvdb::Coord& lo,
+                openvdb::Coord& hi) {
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = std::min(2 * v[a], src[a] - 1);
+        hi[a] = v[a] == dst[a] - 1 ? src[a] - 1 : std::min(2 * v[a] + 1, src[a] - 1);
+    }
+}
+
+// Level `level` from level - 1.
+void buildLevel(SparseVoxelScene& voxels, int level) {
+    const glm::ivec3 src = voxels.levelSize(level - 1), dst = voxels.levelSize(level);
+    const openvdb::FloatTree& childOpacity = voxels.opacityLevels[size_t(level - 1)]->tree();
+    const bool hasRadiance = voxels.injected();
+
+    // Parent topology: every active child marks its parent.
+    openvdb::MaskTree topology(false);
+    {
+        openvdb::tree::ValueAccessor<openvdb::MaskTree> acc(topology);
+        for (auto leaf = childOpacity.cbeginLeaf(); leaf; ++leaf)
+            for (auto it = leaf->cbeginValueOn(); it; ++it) {
+                const openvdb::Coord c = it.getCoord();
+                acc.setValueOn(openvdb::Coord(std::min(c.x() >> 1, dst.x - 1), std::min(c.y() >> 1, dst.y - 1),
+                                              std::min(c.z() >> 1, dst.z - 1)));
+            }
+    }
+    auto opacity = std::make_shared<openvdb::FloatTree>(topology, 0.f, 0.f, openvdb::TopologyCopy());
+    std::shared_ptr<openvdb::Vec3STree> radiance;
+    if (hasRadiance)
+        radiance = std::make_shared<openvdb::Vec3STree>(topology, openvdb::Vec3s(0.f), openvdb::Vec3s(0.f),
+                                                        openvdb::TopologyCopy());
+    openvdb::tree::LeafManager<openvdb::FloatTree> opacityLeaves(*opacity);
+    std::unique_ptr<openvdb::tree::LeafManager<openvdb::Vec3STree>> radianceLeaves;
+    if (hasRadiance) radianceLeaves = std::make_unique<openvdb::tree::LeafManager<openvdb::Vec3STree>>(*radiance);
+    const openvdb::Vec3STree* childRadiance =
+        hasRadiance ? &voxels.radianceLevels[size_t(level - 1)]->tree() : nullptr;
+
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, opacityLeaves.leafCount()), [&](const tbb::blocked_range<size_t>& r) {
+        openvdb::FloatTree::ConstAccessor opAcc(childOpacity);
+        std::unique_ptr<openvdb::Vec3STree::ConstAccessor> radAcc;
+        if (childRadiance) radAcc = std::make_unique<openvdb::Vec3STree::ConstAccessor>(*childRadiance);
+        for (size_t li = r.begin(); li != r.end(); ++li) {
+            auto& opLeaf = opacityLeaves.leaf(li);
+            for (auto it = opLeaf.beginValueOn(); it; ++it) {
+                openvdb::Coord lo, hi;
+                childRange(it.getCoord(), src, dst, lo, hi);
+                float a = 0.f;
+                openvdb::Vec3s c(0.f);
+                for (int z = lo.z(); z <= hi.z(); ++z)
+                    for (int y = lo.y(); y <= hi.y(); ++y)
+                        for (int x = lo.x(); x <= hi.x(); ++x) {
+                            const openvdb::Coord ijk(x, y, z);
+                            a += opAcc.getValue(ijk);
+                            if (radAcc) c += radAcc->getValue(ijk);
+                        }
+                const openvdb::Coord n = hi - lo + openvdb::Coord(1);
+                const float inv = 1.f / float(n.x() * n.y() * n.z());
+                it.setValue(a * inv);
+                if (radianceLeaves) radianceLeaves->leaf(li).setValueOnly(it.pos(), c * inv);
+            }
+        }
+    });
+
+    auto opacityGrid = openvdb::FloatGrid::create(opacity);
+    opacityGrid->setName("opacity_L" + std::to_string(level));
+    opacityGrid->setGridClass(openvdb::GRID_FOG_VOLUME);
+    opacityGrid->setTransform(levelTransform(voxels, level));
+    voxels.opacityLevels.push_back(opacityGrid);
+    if (hasRadiance) {
+        auto radianceGrid = openvdb::Vec3SGrid::create(radiance);
+        radianceGrid->setName("radiance_L" + std::to_string(level));
+        radianceGrid->setTransform(levelTransform(voxels, level));
+        voxels.radianceLevels.push_back(radianceGrid);
+    }
+}
+
+size_t product(const glm::ivec3& v) { return size_t(v.x) * size_t(v.y) * size_t(v.z); }
+
+}  // namespace
+
+void buildSparseLevels(SparseVoxelScene& voxels) {
+    if (!voxels.opacity) throw std::invalid_argument("buildSparseLevels: the scene is not voxelized");
+    const auto t0 = std::chrono::steady_clock::now();
+    voxels.opacityLevels.resize(1);
+    if (voxels.injected()) voxels.radianceLevels.resize(1);
+    for (int level = 1; level < voxels.levels; ++level) buildLevel(voxels, level);
+    voxels.stats.levelsSeconds = secondsSince(t0);
+    updateSparseMemoryStats(voxels);
+}
+
+void updateSparseMemoryStats(SparseVoxelScene& voxels) {
+    SparseVoxelStats& s = voxels.stats;
+    s.activeVoxels = voxels.opacity ? size_t(voxels.opacity->activeVoxelCount()) : 0;
+    s.leafNodes = voxels.opacity ? size_t(voxels.opacity->tree().leafCount()) : 0;
+    s.memoryBytes = 0;
+    for (const auto& g : voxels.opacityLevels) s.memoryBytes += size_t(g->memUsage());
+    for (const auto& g : voxels.radianceLevels) s.memoryBytes += size_t(g->memUsage());
+    for (const auto* g : {&voxels.albedo, &voxels.normal, &voxels.emission})
+        if (*g) s.memoryBytes += size_t((*g)->memUsage());
+    // Dense equivalent of the same channels in float32: per level, opacity (4 B) and radiance
+    // (12 B) when held; level 0 also albedo, normal and emission (12 B each).
+    const int maxRes = std::max(voxels.resolution.x, std::max(voxels.resolution.y, voxels.resolution.z));
+    s.denseBytes = s.denseCubeBytes = 0;
+    for (int level = 0; level < int(voxels.opacityLevels.size()); ++level) {
+        size_t perVoxel = 4 + (level < int(voxels.radianceLevels.size()) ? 12 : 0);
+        if (level == 0) perVoxel += (voxels.albedo ? 12 : 0) + (voxels.normal ? 12 : 0) + (voxels.emission ? 12 : 0);
+        s.denseBytes += product(voxels.levelSize(level)) * perVoxel;
+        s.denseCubeBytes += product(glm::ivec3(std::max(maxRes >> level, 1))) * perVoxel;
+    }
+}
+
+SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject, float sky,
+                                   const ParamMap& params) {
+    if (!std::isfinite(sky) || sky < 0.f)
+        throw std::invalid_argument("buildSparseVoxels: sky radiance must be finite and >= 0");
+    const float offset = params.getFloat("vct.inject.offset", 2.f, 0.f, 16.f,
+                                         "voxels along the normal where shadow rays of injection start");
+    const int bounces = params.getInt("vct.bounces", 0, 0, 8, "extra diffuse bounces traced between voxels");
+    params.getBool("vct.bounce.sky", true, "bounce cones that escape see the sky radiance");
+    params.getChoice("vct.voxel.precision", "auto", {"auto", "half", "float"},
+                     "storage of emission/radiance: half (RGBA16F, clamps at 65504), float (RGBA32F), "
+                     "auto = float when emission or lights exceed the half range");
+    if (inject && bounces > 0)
+        throw std::invalid_argument("--backend vdb: vct.bounces = " + std::to_string(bounces) +
+                                    " is not supported (the sparse path injects direct light only)");
+    SparseVoxelScene voxels = voxelizeSparse(scene, voxelRes);
+    if (inject) injectSparseRadiance(voxels, scene, offset);
+    buildSparseLevels(voxels);
+    // Collapse constant blocks into tiles (tolerance 0: values are kept exactly).
+    for (auto& g : voxels.opacityLevels) openvdb::tools::prune(g->tree());
+    for (auto& g : voxels.radianceLevels) openvdb::tools::prune(g->tree());
+    for (auto* g : {&voxels.albedo, &voxels.normal, &voxels.emission}) openvdb::tools::prune((*g)->tree());
+    updateSparseMemoryStats(voxels);
+    return voxels;
+}
+
+}  // namespace vct

@@ -1,0 +1,301 @@
+// Sparse conservative voxelization: the CPU twin of shaders/voxelize/voxelize.glsl and
+// resolve.glsl. Each TBB thread marks the voxels its triangles overlap in its own index grid
+// (Int32Tree: voxel -> slot in its array of fixed-point sums); the union of those topologies
+// is the occupied set, and each occupied voxel adds up the sums of every thread. The sums are
+// integers (the GPU's fixed-point scales), so the total does not depend on which thread saw
+// which triangle: the grids are bit-identical for any thread count and schedule.
+#include "reference/texture_sampler.h"
+#include "vdb/sparse_detail.h"
+#include "vdb/triangle_box.h"
+#include "voxelize/voxel_grid.h"
+
+#include <openvdb/tree/LeafManager.h>
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+
+namespace vct {
+
+namespace vdbdetail {
+
+void ensureOpenVdb() {
+    static std::once_flag once;
+    std::call_once(once, [] { openvdb::initialize(); });
+}
+
+}  // namespace vdbdetail
+
+namespace {
+
+using namespace vdbdetail;
+
+// Fixed point of voxelize_shared.h (VOX_*): integer weight ~ area in voxel faces x 16.
+constexpr int kWeightMax = 16;
+constexpr float kAlbedoScale = 4095.f;
+constexpr float kNormalScale = 4095.f;
+constexpr float kEmissionScale = 4096.f;
+constexpr float kEmissionMax = 1.0e9f;
+
+struct VoxelSums {
+    uint64_t albedo[3] = {0, 0, 0};
+    int64_t normal[3] = {0, 0, 0};
+    uint64_t weight = 0;
+    uint64_t emission[3] = {0, 0, 0};
+};
+
+// One thread's share: voxel -> index into `sums`.
+struct ThreadSums {
+    openvdb::Int32Tree slots{-1};
+    std::vector<VoxelSums> sums;
+};
+
+struct Tri {
+    glm::vec3 p[3];  // voxel units
+    glm::vec3 n[3];
+    glm::vec2 uv[3];
+    glm::vec3 faceN;
+    uint32_t material = 0;
+    glm::ivec3 lo, hi;
+    int axis = 2;
+    uint32_t weight = 1;
+};
+
+// vox_loadTriangle; false when the triangle misses the grid.
+bool loadTriangle(const Scene& scene, size_t t, const glm::vec3& origin, float invVoxelSize,
+                  const glm::ivec3& res, Tri& tri) {
+    const glm::uvec3 idx = scene.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+        tri.p[k] = (scene.positions[idx[k]] - origin) * invVoxelSize;
+        tri.n[k] = idx[k] < scene.normals.size() ? scene.normals[idx[k]] : glm::vec3(0.f);
+        tri.uv[k] = idx[k] < scene.uvs.size() ? scene.uvs[idx[k]] : glm::vec2(0.f);
+    }
+    tri.material = t < scene.triangleMaterial.size() ? scene.triangleMaterial[t] : 0u;
+    tri.faceN = glm::cross(tri.p[1] - tri.p[0], tri.p[2] - tri.p[0]);
+    const glm::vec3 bmin = glm::min(tri.p[0], glm::min(tri.p[1], tri.p[2]));
+    const glm::vec3 bmax = glm::max(tri.p[0], glm::max(tri.p[1], tri.p[2]));
+    tri.lo = glm::max(glm::ivec3(glm::floor(bmin - 0.5f * kVoxBoxGrowth)), glm::ivec3(0));
+    tri.hi = glm::min(glm::ivec3(glm::floor(bmax + 0.5f * kVoxBoxGrowth)), res - 1);
+    const glm::vec3 an = glm::abs(tri.faceN);
+    tri.axis = an.x >= an.y && an.x >= an.z ? 0 : (an.y >= an.z ? 1 : 2);
+    const float area = 0.5f * glm::length(tri.faceN);
+    tri.weight = uint32_t(std::clamp(std::round(area * float(kWeightMax)), 1.f, float(kWeightMax)));
+    return tri.lo.x <= tri.hi.x && tri.lo.y <= tri.hi.y && tri.lo.z <= tri.hi.z;
+}
+
+// vox_barycentrics: of the plane point nearest to q, clamped into the triangle.
+glm::vec3 barycentrics(const Tri& tri, const glm::vec3& q) {
+    const glm::vec3 e1 = tri.p[1] - tri.p[0], e2 = tri.p[2] - tri.p[0], d = q - tri.p[0];
+    const float d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
+    const float d1 = glm::dot(d, e1), d2 = glm::dot(d, e2);
+    const float det = d11 * d22 - d12 * d12;
+    if (!(det > 0.f)) return glm::vec3(1.f / 3.f);
+    const float v = (d22 * d1 - d12 * d2) / det, w = (d11 * d2 - d12 * d1) / det;
+    glm::vec3 b = glm::max(glm::vec3(1.f - v - w, v, w), glm::vec3(0.f));
+    return b / (b.x + b.y + b.z);
+}
+
+// vox_accumulate: adds the triangle's fixed-point attributes at voxel v.
+void accumulate(const Scene& scene, const Tri& tri, const glm::ivec3& v, ThreadSums& ts,
+                openvdb::tree::ValueAccessor<openvdb::Int32Tree>& acc) {
+    const glm::vec3 b = barycentrics(tri, glm::vec3(v) + 0.5f);
+    const glm::vec2 uv = b.x * tri.uv[0] + b.y * tri.uv[1] + b.z * tri.uv[2];
+    if (tri.material < scene.materials.size()) {
+        const Material& m = scene.materials[tri.material];
+        if (m.alphaMask && materialAlpha(scene, tri.material, uv) < m.alphaCutoff) return;
+    }
+    const glm::vec3 albedo =
+        tri.material < scene.materials.size() ? materialAlbedo(scene, tri.material, uv) : glm::vec3(1.f);
+    const glm::vec3 emission = tri.material < scene.materials.size()
+                                   ? materialEmission(scene, tri.material, uv)
+                                   : glm::vec3(0.f);
+    glm::vec3 n = b.x * tri.n[0] + b.y * tri.n[1] + b.z * tri.n[2];
+    const float len = glm::length(n), faceLen = glm::length(tri.faceN);
+    n = len > 1e-6f ? n / len : (faceLen > 0.f ? tri.faceN / faceLen : glm::vec3(0.f));
+
+    const openvdb::Coord ijk(v.x, v.y, v.z);
+    int32_t slot = -1;
+    if (!acc.probeValue(ijk, slot)) {
+        slot = int32_t(ts.sums.size());
+        ts.sums.emplace_back();
+        acc.setValueOn(ijk, slot);
+    }
+    VoxelSums& s = ts.sums[size_t(slot)];
+    const uint64_t w = tri.weight;
+    for (int c = 0; c < 3; ++c) {
+        s.albedo[c] += uint64_t(std::round(std::clamp(albedo[c], 0.f, 1.f) * kAlbedoScale)) * w;
+        s.normal[c] += int64_t(std::round(std::clamp(n[c], -1.f, 1.f) * kNormalScale)) * int64_t(w);
+        const float e = std::clamp(emission[c], 0.f, kEmissionMax);
+        if (e > 0.f) s.emission[c] += uint64_t(e * float(w) * kEmissionScale);
+    }
+    s.weight += w;
+}
+
+// vox_column: the candidate run of one column of the dominant-axis projection.
+void voxelizeColumn(const Scene& scene, const Tri& tri, int i, int j, ThreadSums& ts,
+                    openvdb::tree::ValueAccessor<openvdb::Int32Tree>& acc) {
+    const int d = tri.axis, a = (d + 1) % 3, b = (d + 2) % 3;
+    int kLo = tri.lo[d], kHi = tri.hi[d];
+    const glm::vec3& n = tri.faceN;
+    if (std::abs(n[d]) > 0.f) {
+        const float c = glm::dot(n, tri.p[0]);
+        const float g = kVoxBoxGrowth;
+        float zMin = 3.4e38f, zMax = -3.4e38f;
+        for (int k = 0; k < 4; ++k) {
+            const float pa = float(i) + ((k & 1) != 0 ? 1.f + g : -g);
+            const float pb = float(j) + ((k & 2) != 0 ? 1.f + g : -g);
+            const float z = (c - n[a] * pa - n[b] * pb) / n[d];
+            zMin = std::min(zMin, z);
+            zMax = std::max(zMax, z);
+        }
+        kLo = std::max(kLo, int(std::floor(zMin)) - 1);
+        kHi = std::min(kHi, int(std::floor(zMax)) + 1);
+    }
+    for (int k = kLo; k <= kHi; ++k) {
+        glm::ivec3 v;
+        v[a] = i;
+        v[b] = j;
+        v[d] = k;
+        if (triangleOverlapsVoxel(tri.p, tri.faceN, glm::vec3(v) + 0.5f)) accumulate(scene, tri, v, ts, acc);
+    }
+}
+
+void voxelizeTriangle(const Scene& scene, const Tri& tri, ThreadSums& ts,
+                      openvdb::tree::ValueAccessor<openvdb::Int32Tree>& acc) {
+    const int d = tri.axis, a = (d + 1) % 3, b = (d + 2) % 3;
+    for (int j = tri.lo[b]; j <= tri.hi[b]; ++j)
+        for (int i = tri.lo[a]; i <= tri.hi[a]; ++i) voxelizeColumn(scene, tri, i, j, ts, acc);
+}
+
+void checkScene(const Scene& scene) {
+    for (size_t i = 0; i < scene.positions.size(); ++i) {
+        const glm::vec3& p = scene.positions[i];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            throw std::invalid_argument("voxelizeSparse: vertex " + std::to_string(i) + " is not finite");
+    }
+    for (size_t t = 0; t < scene.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k)
+            if (scene.triangles[t][k] >= scene.positions.size())
+                throw std::invalid_argument("voxelizeSparse: triangle " + std::to_string(t) +
+                                            " indexes a missing vertex");
+    for (const Material& m : scene.materials)
+        for (int c = 0; c < 3; ++c)
+            if (!std::isfinite(m.emissiveFactor[c]))
+                throw std::invalid_argument("voxelizeSparse: material '" + m.name + "' emission is not finite");
+}
+
+}  // namespace
+
+SparseVoxelScene voxelizeSparse(const Scene& scene, int voxelRes) {
+    ensureOpenVdb();
+    checkScene(scene);
+    const auto t0 = std::chrono::steady_clock::now();
+    const VoxelGrid layout = makeGridLayout(scene.bounds, voxelRes);
+    SparseVoxelScene out;
+    out.resolution = layout.resolution;
+    out.voxelSize = layout.voxelSize;
+    out.origin = layout.origin;
+    out.levels = layout.levels;
+    out.voxelFromWorld = layout.voxelFromWorld;
+    out.worldFromVoxel = layout.worldFromVoxel;
+    out.sceneName = scene.path;
+
+    // Per-thread marking and fixed-point sums.
+    const float invVoxelSize = 1.f / layout.voxelSize;
+    tbb::enumerable_thread_specific<std::unique_ptr<ThreadSums>> perThread;
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, scene.triangles.size(), 64),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                          std::unique_ptr<ThreadSums>& ts = perThread.local();
+                          if (!ts) ts = std::make_unique<ThreadSums>();
+                          openvdb::tree::ValueAccessor<openvdb::Int32Tree> acc(ts->slots);
+                          Tri tri;
+                          for (size_t t = r.begin(); t != r.end(); ++t)
+                              if (loadTriangle(scene, t, out.origin, invVoxelSize, out.resolution, tri))
+                                  voxelizeTriangle(scene, tri, *ts, acc);
+                      });
+    std::vector<const ThreadSums*> threads;
+    for (const auto& ts : perThread)
+        if (ts) threads.push_back(ts.get());
+
+    // The occupied set: union of every thread's topology (order independent).
+    openvdb::MaskTree topology(false);
+    for (const ThreadSums* ts : threads) topology.topologyUnion(ts->slots);
+
+    auto opacity = std::make_shared<openvdb::FloatTree>(topology, 0.f, 1.f, openvdb::TopologyCopy());
+    const openvdb::Vec3s zero(0.f);
+    auto albedo = std::make_shared<openvdb::Vec3STree>(topology, zero, zero, openvdb::TopologyCopy());
+    auto normal = std::make_shared<openvdb::Vec3STree>(topology, zero, zero, openvdb::TopologyCopy());
+    auto emission = std::make_shared<openvdb::Vec3STree>(topology, zero, zero, openvdb::TopologyCopy());
+    openvdb::tree::LeafManager<openvdb::FloatTree> opacityLeaves(*opacity);
+    openvdb::tree::LeafManager<openvdb::Vec3STree> albedoLeaves(*albedo), normalLeaves(*normal),
+        emissionLeaves(*emission);
+
+    // Resolve (resolve.glsl): weighted averages from the summed fixed-point values.
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, opacityLeaves.leafCount()), [&](const tbb::blocked_range<size_t>& r) {
+        std::vector<const openvdb::Int32Tree::LeafNodeType*> threadLeaves(threads.size());
+        for (size_t li = r.begin(); li != r.end(); ++li) {
+            const auto& opLeaf = opacityLeaves.leaf(li);
+            auto& alLeaf = albedoLeaves.leaf(li);
+            auto& nrLeaf = normalLeaves.leaf(li);
+            auto& emLeaf = emissionLeaves.leaf(li);
+            if (alLeaf.origin() != opLeaf.origin() || emLeaf.origin() != opLeaf.origin())
+                throw std::logic_error("voxelizeSparse: leaf order differs between grids of one topology");
+            for (size_t k = 0; k < threads.size(); ++k)
+                threadLeaves[k] = threads[k]->slots.probeConstLeaf(opLeaf.origin());
+            for (auto it = opLeaf.cbeginValueOn(); it; ++it) {
+                const openvdb::Index offset = it.pos();
+                VoxelSums s;
+                for (size_t k = 0; k < threads.size(); ++k) {
+                    const auto* tl = threadLeaves[k];
+                    if (!tl || !tl->isValueOn(offset)) continue;
+                    const VoxelSums& t = threads[k]->sums[size_t(tl->getValue(offset))];
+                    for (int c = 0; c < 3; ++c) {
+                        s.albedo[c] += t.albedo[c];
+                        s.normal[c] += t.normal[c];
+                        s.emission[c] += t.emission[c];
+                    }
+                    s.weight += t.weight;
+                }
+                const float weight = float(s.weight);
+                openvdb::Vec3s a, n, e;
+                for (int c = 0; c < 3; ++c) {
+                    a[c] = float(s.albedo[c]) / (weight * kAlbedoScale);
+                    n[c] = float(s.normal[c]);
+                    e[c] = float(double(s.emission[c])) / (weight * kEmissionScale);
+                }
+                // Normals that cancel (both faces of a thin wall in one voxel) are stored as zero:
+                // injection then treats the voxel as facing every light.
+                const float len = n.length();
+                n = len > 1e-3f * weight * kNormalScale ? n / len : zero;
+                alLeaf.setValueOnly(offset, a);
+                nrLeaf.setValueOnly(offset, n);
+                emLeaf.setValueOnly(offset, e);
+            }
+        }
+    });
+
+    auto makeGrid = [&](auto tree, const char* name) {
+        using TreeT = typename decltype(tree)::element_type;
+        auto grid = openvdb::Grid<TreeT>::create(tree);
+        grid->setName(name);
+        grid->setTransform(levelTransform(out, 0));
+        return grid;
+    };
+    out.opacity = makeGrid(opacity, "opacity");
+    out.opacity->setGridClass(openvdb::GRID_FOG_VOLUME);
+    out.albedo = makeGrid(albedo, "albedo");
+    out.normal = makeGrid(normal, "normal");
+    out.normal->setVectorType(openvdb::VEC_COVARIANT_NORMALIZE);
+    out.emission = makeGrid(emission, "emission");
+    out.opacityLevels = {out.opacity};
+    out.stats.voxelizeSeconds = secondsSince(t0);
+    updateSparseMemoryStats(out);
+    return out;
+}
+
+}  // namespace vct

@@ -1,0 +1,84 @@
+// The sparse (OpenVDB, CPU) counterpart of the dense GPU voxel grid of voxelize/voxel_grid.h.
+// It computes the same quantities on the same layout (makeGridLayout), so the two backends can
+// be compared voxel for voxel and image for image:
+//
+// - level 0: opacity (1 where a triangle overlaps the voxel, conservative SAT), albedo, unit
+//   normal and emission as area-weighted averages, quantized exactly as the GPU shader does
+//   (12-bit albedo/normal, 2^-12 emission, integer weights in [1, 16]); integer sums make the
+//   result independent of triangle order and thread count, bit for bit;
+// - radiance: emission + albedo / pi * E, E from the punctual lights with visibility marched
+//   through the level-0 opacity (same offsets, units and spot falloff as inject.glsl), stored
+//   premultiplied (rgb * opacity; its alpha is the opacity grid of the same level);
+// - levels 1..: the mean of the 2x2x2 children (3 along an axis at its last voxel when the
+//   finer size is odd, as mip_common.glsl), empty children count as 0. Isotropic only.
+//
+// Index space: level-k voxel (i, j, k) covers voxel units [i, i + 1] * resolution / size_k
+// (size_k = max(resolution >> k, 1) per axis, as GL mip sizes); each grid's transform maps it
+// to world space. Only voxels with content are active; everything else reads 0 (the GL zero
+// border and empty space alike).
+#pragma once
+
+#include "render/params.h"
+#include "scene/scene.h"
+
+#include <glm/glm.hpp>
+#include <openvdb/openvdb.h>
+
+#include <string>
+#include <vector>
+
+namespace vct {
+
+struct SparseVoxelStats {
+    size_t activeVoxels = 0;     // level-0 occupied voxels
+    size_t leafNodes = 0;        // level-0 leaf nodes (8^3 voxels each)
+    size_t memoryBytes = 0;      // tree memUsage of every grid and level held
+    size_t denseBytes = 0;       // same channels (float32) over the dense non-cubic grid and its mips
+    size_t denseCubeBytes = 0;   // same channels over resolution^3 (the "res^3" convention)
+    double voxelizeSeconds = 0.0;
+    double injectSeconds = 0.0;
+    double levelsSeconds = 0.0;
+};
+
+struct SparseVoxelScene {
+    glm::ivec3 resolution{0};   // level-0 voxels per axis (makeGridLayout)
+    float voxelSize = 0.f;      // world units
+    glm::vec3 origin{0.f};      // world position of the grid's min corner
+    int levels = 1;             // as VoxelGrid::levels: floor(log2(max resolution)) + 1
+    glm::mat4 voxelFromWorld{1.f};
+    glm::mat4 worldFromVoxel{1.f};
+    std::string sceneName;
+
+    openvdb::FloatGrid::Ptr opacity;    // level 0 (== opacityLevels[0])
+    openvdb::Vec3SGrid::Ptr albedo;     // level 0, average linear albedo
+    openvdb::Vec3SGrid::Ptr normal;     // level 0, average unit normal (0 where faces cancel)
+    openvdb::Vec3SGrid::Ptr emission;   // level 0, average emitted radiance
+    openvdb::Vec3SGrid::Ptr radiance;   // level 0, premultiplied; null unless injected
+    std::vector<openvdb::FloatGrid::Ptr> opacityLevels;    // [0, levels)
+    std::vector<openvdb::Vec3SGrid::Ptr> radianceLevels;   // [0, levels) when injected, else empty
+
+    SparseVoxelStats stats;
+
+    bool injected() const { return bool(radiance); }
+    // Voxels per axis of level k (GL mip sizes).
+    glm::ivec3 levelSize(int level) const { return glm::max(resolution >> level, glm::ivec3(1)); }
+};
+
+// Voxelizes `scene` (grid fitted to scene.bounds with `voxelRes` voxels along the longest axis,
+// [4, 1024]), optionally injects direct light + emission, and builds the levels. TBB parallel;
+// the result is bit-identical for any thread count. ParamMap keys (shared with the GPU path):
+//   vct.inject.offset    0..16 voxels, default 2: where shadow marches start along the normal.
+//   vct.bounces          must be 0 here (multi-bounce is GPU-only); throws otherwise.
+//   vct.bounce.sky, vct.voxel.precision: read for parity with the GPU path; the sparse grids
+//                        always hold float32.
+SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject, float sky,
+                                   const ParamMap& params);
+
+// The steps of buildSparseVoxels, for tests and tools.
+SparseVoxelScene voxelizeSparse(const Scene& scene, int voxelRes);
+void injectSparseRadiance(SparseVoxelScene& voxels, const Scene& scene, float shadowOffsetVoxels);
+void buildSparseLevels(SparseVoxelScene& voxels);
+// Recomputes stats.memoryBytes / denseBytes / activeVoxels from the grids held.
+void updateSparseMemoryStats(SparseVoxelScene& voxels);
+
+}  // namespace vct
