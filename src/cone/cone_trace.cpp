@@ -58,11 +58,7 @@ GlTexture tracePass(ConeMode mode, const VoxelGrid& grid, const GBuffer& gbuffer
     GlTexture out = createTexture2D(gi ? GL_RGBA32F : GL_R32F, gbuffer.width, gbuffer.height);
     GlBuffer ubo = bindConeUniforms(u);
 
-    // The four G-buffer attachments the cones read, on the units of render/gbuffer.h.
-    glBindTextureUnit(kUnitPosition, gbuffer.position.id());
-    glBindTextureUnit(kUnitNormal, gbuffer.normal.id());
-    glBindTextureUnit(kUnitGeomNormal, gbuffer.geomNormal.id());
-    glBindTextureUnit(kUnitAlbedo, gbuffer.albedo.id());
+    bindGBufferTextures(gbuffer);  // the shaders texelFetch position, normal, geomNormal, albedo
     glBindTextureUnit(gpu::CONE_UNIT_OPACITY, gi ? grid.radiance.id() : grid.opacity.id());
     if (aniso)
         for (int i = 0; i < 6; ++i) glBindTextureUnit(gpu::CONE_UNIT_ANISO + i, grid.anisoRadiance[i].id());

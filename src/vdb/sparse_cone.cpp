@@ -17,8 +17,8 @@ namespace vct {
 
 namespace {
 
-using OpacityAcc = openvdb::FloatTree::ConstUnsafeAccessor;
-using RadianceAcc = openvdb::Vec3STree::ConstUnsafeAccessor;
+using OpacityAcc = openvdb::tree::ValueAccessor<const openvdb::FloatTree, false>;  // unregistered: read-only trees
+using RadianceAcc = openvdb::tree::ValueAccessor<const openvdb::Vec3STree, false>;
 
 struct MarchParams {
     float tanHalf, beta, offset, maxAlpha, planeRatio, maxLod;

@@ -7,6 +7,10 @@
 
 namespace vct::vdbdetail {
 
+// Read-only accessor, not registered with its tree (trees are not modified while read).
+template <typename TreeT>
+using ConstAcc = openvdb::tree::ValueAccessor<const TreeT, false>;
+
 // Index-to-world transform of level `level`: voxel (i, j, k) is centred at
 // origin + (ijk + 0.5) * voxelSize * resolution / levelSize(level).
 openvdb::math::Transform::Ptr levelTransform(const SparseVoxelScene& voxels, int level);

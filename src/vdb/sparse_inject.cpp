@@ -26,7 +26,7 @@ constexpr float kPi = 3.14159265358979f;
 constexpr float kFloatMax = std::numeric_limits<float>::max();
 
 // Transmittance from `o` (voxel units) along unit `d` up to tMax (inject_visibility).
-float visibility(const openvdb::FloatTree::ConstAccessor& acc, const glm::vec3& res, const glm::vec3& o,
+float visibility(const ConstAcc<openvdb::FloatTree>& acc, const glm::vec3& res, const glm::vec3& o,
                  const glm::vec3& d, float tMax) {
     // Clip to the grid box: outside it there is nothing to block.
     glm::vec3 invD;
@@ -66,7 +66,7 @@ struct InjectContext {
 // inject_lightIrradiance: a zero normal (faces both ways) is lit as if facing the light at
 // half weight, since half its area faces away.
 glm::vec3 lightIrradiance(const InjectContext& ctx, const Light& light, const glm::vec3& pWorld,
-                          const glm::vec3& pVoxel, const glm::vec3& n, const openvdb::FloatTree::ConstAccessor& acc) {
+                          const glm::vec3& pVoxel, const glm::vec3& n, const ConstAcc<openvdb::FloatTree>& acc) {
     glm::vec3 toLight;
     float distance;
     glm::vec3 intensity = light.color;
@@ -119,8 +119,8 @@ void injectSparseRadiance(SparseVoxelScene& voxels, const Scene& scene, float sh
     openvdb::tree::LeafManager<const openvdb::FloatTree> opacityLeaves(opacity);
     openvdb::tree::LeafManager<openvdb::Vec3STree> radianceLeaves(*radiance);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, opacityLeaves.leafCount()), [&](const tbb::blocked_range<size_t>& r) {
-        openvdb::FloatTree::ConstAccessor opAcc(opacity);
-        openvdb::Vec3STree::ConstAccessor alAcc(voxels.albedo->tree()), nrAcc(voxels.normal->tree()),
+        ConstAcc<openvdb::FloatTree> opAcc(opacity);
+        ConstAcc<openvdb::Vec3STree> alAcc(voxels.albedo->tree()), nrAcc(voxels.normal->tree()),
             emAcc(voxels.emission->tree());
         for (size_t li = r.begin(); li != r.end(); ++li) {
             const auto& opLeaf = opacityLeaves.leaf(li);

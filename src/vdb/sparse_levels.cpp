@@ -75,9 +75,9 @@ void buildLevel(SparseVoxelScene& voxels, int level) {
         hasRadiance ? &voxels.radianceLevels[size_t(level - 1)]->tree() : nullptr;
 
     tbb::parallel_for(tbb::blocked_range<size_t>(0, opacityLeaves.leafCount()), [&](const tbb::blocked_range<size_t>& r) {
-        openvdb::FloatTree::ConstAccessor opAcc(childOpacity);
-        std::unique_ptr<openvdb::Vec3STree::ConstAccessor> radAcc;
-        if (childRadiance) radAcc = std::make_unique<openvdb::Vec3STree::ConstAccessor>(*childRadiance);
+        ConstAcc<openvdb::FloatTree> opAcc(childOpacity);
+        std::unique_ptr<ConstAcc<openvdb::Vec3STree>> radAcc;
+        if (childRadiance) radAcc = std::make_unique<ConstAcc<openvdb::Vec3STree>>(*childRadiance);
         for (size_t li = r.begin(); li != r.end(); ++li) {
             auto& opLeaf = opacityLeaves.leaf(li);
             for (auto it = opLeaf.beginValueOn(); it; ++it) {

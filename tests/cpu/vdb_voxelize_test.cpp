@@ -1,0 +1,303 @@
+// Sparse voxelization, injection and levels (src/vdb) against an independent double-precision
+// overlap test, closed forms, and an independent dense implementation of the level rule.
+#include "support/test_scenes.h"
+#include "vdb/sparse_voxels.h"
+
+#include <gtest/gtest.h>
+#include <tbb/task_arena.h>
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <random>
+#include <set>
+#include <tuple>
+
+namespace vct {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+using Key = std::tuple<int, int, int>;
+
+std::set<Key> activeSet(const openvdb::FloatGrid& g) {
+    std::set<Key> s;
+    for (auto it = g.cbeginValueOn(); it; ++it) {
+        openvdb::CoordBBox box = it.getBoundingBox();  // tiles cover several voxels
+        for (auto c = box.begin(); c; ++c) s.insert({(*c).x(), (*c).y(), (*c).z()});
+    }
+    return s;
+}
+
+// True when no axis among the box normals, the triangle normal and the nine edge x axis
+// cross products separates the triangle from the cube of half-size h centred at c (double).
+bool overlapsExact(const std::array<glm::dvec3, 3>& tri, glm::dvec3 c, double h) {
+    std::array<glm::dvec3, 3> v = {tri[0] - c, tri[1] - c, tri[2] - c};
+    auto separated = [&](glm::dvec3 axis) {
+        double p0 = glm::dot(axis, v[0]), p1 = glm::dot(axis, v[1]), p2 = glm::dot(axis, v[2]);
+        double r = h * (std::abs(axis.x) + std::abs(axis.y) + std::abs(axis.z));
+        return std::min({p0, p1, p2}) > r || std::max({p0, p1, p2}) < -r;
+    };
+    const glm::dvec3 e[3] = {v[1] - v[0], v[2] - v[1], v[0] - v[2]};
+    std::vector<glm::dvec3> axes = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, glm::cross(e[0], e[1])};
+    for (const auto& ei : e)
+        for (glm::dvec3 a : {glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)}) axes.push_back(glm::cross(ei, a));
+    for (const auto& a : axes)
+        if (glm::dot(a, a) > 0.0 && separated(a)) return false;
+    return true;
+}
+
+void addTriangle(Scene& s, glm::vec3 a, glm::vec3 b, glm::vec3 c, uint32_t m) {
+    glm::vec3 n = glm::cross(b - a, c - a);
+    n = glm::length(n) > 0.f ? glm::normalize(n) : glm::vec3(0, 1, 0);
+    uint32_t base = uint32_t(s.positions.size());
+    for (glm::vec3 p : {a, b, c}) {
+        s.positions.push_back(p);
+        s.normals.push_back(n);
+        s.uvs.push_back(glm::vec2(0.f));
+    }
+    s.triangles.push_back({base, base + 1, base + 2});
+    s.triangleMaterial.push_back(m);
+    s.triangleOffscreen.push_back(0);
+}
+
+// Thin, sub-voxel, axis-aligned and random triangles inside [0, 10]^3.
+Scene awkwardTriangles(uint32_t seed) {
+    Scene s;
+    uint32_t m = vcttest::addMaterial(s, glm::vec3(0.5f));
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(0.5f, 9.5f), small(-0.05f, 0.05f);
+    for (int i = 0; i < 40; ++i) {
+        glm::vec3 a(u(rng), u(rng), u(rng));
+        switch (i % 4) {
+        case 0: addTriangle(s, a, glm::vec3(u(rng), u(rng), u(rng)), glm::vec3(u(rng), u(rng), u(rng)), m); break;
+        case 1: addTriangle(s, a, a + glm::vec3(small(rng), small(rng), small(rng)), a + glm::vec3(small(rng), small(rng), small(rng)), m); break;  // sub-voxel
+        case 2: addTriangle(s, a, glm::vec3(u(rng), a.y, a.z), glm::vec3(a.x, a.y, u(rng)), m); break;  // axis-aligned (y plane)
+        default: addTriangle(s, a, glm::vec3(u(rng), u(rng), u(rng)), a + glm::vec3(1e-3f, 0.f, 0.f), m); break;  // sliver
+        }
+    }
+    s.bounds.expand(glm::vec3(0.f));
+    s.bounds.expand(glm::vec3(10.f));
+    return s;
+}
+
+TEST(VdbVoxelize, NoHolesAgainstExactOverlap) {
+    for (uint32_t seed : {1u, 2u}) {
+        Scene s = awkwardTriangles(seed);
+        SparseVoxelScene v = voxelizeSparse(s, 48);
+        std::set<Key> marked = activeSet(*v.opacity);
+        // Every voxel that a triangle overlaps with margin must be marked; every marked voxel must
+        // overlap some triangle within a small growth (conservative, not loose).
+        std::set<Key> must, may;
+        for (size_t t = 0; t < s.triangles.size(); ++t) {
+            std::array<glm::dvec3, 3> tri;
+            glm::dvec3 lo(1e30), hi(-1e30);
+            for (int k = 0; k < 3; ++k) {
+                tri[k] = (glm::dvec3(s.positions[s.triangles[t][k]]) - glm::dvec3(v.origin)) / double(v.voxelSize);
+                lo = glm::min(lo, tri[k]);
+                hi = glm::max(hi, tri[k]);
+            }
+            for (int z = int(std::floor(lo.z)) - 1; z <= int(std::floor(hi.z)) + 1; ++z)
+                for (int y = int(std::floor(lo.y)) - 1; y <= int(std::floor(hi.y)) + 1; ++y)
+                    for (int x = int(std::floor(lo.x)) - 1; x <= int(std::floor(hi.x)) + 1; ++x) {
+                        glm::dvec3 c(x + 0.5, y + 0.5, z + 0.5);
+                        if (overlapsExact(tri, c, 0.5 - 1e-4)) must.insert({x, y, z});
+                        if (overlapsExact(tri, c, 0.5 + 1e-3)) may.insert({x, y, z});
+                    }
+        }
+        size_t missing = 0, extra = 0;
+        for (const Key& k : must) missing += marked.count(k) == 0;
+        for (const Key& k : marked) extra += may.count(k) == 0;
+        EXPECT_EQ(missing, 0u) << "seed " << seed << ": " << must.size() << " voxels required";
+        EXPECT_EQ(extra, 0u) << "seed " << seed;
+        EXPECT_EQ(v.stats.activeVoxels, marked.size());
+        EXPECT_GE(marked.size(), must.size());
+    }
+}
+
+Scene floorAndBox() {
+    Scene s;
+    uint32_t floor = vcttest::addMaterial(s, glm::vec3(0.2f, 0.5f, 0.8f));
+    uint32_t box = vcttest::addMaterial(s, glm::vec3(0.7f), glm::vec3(0.f, 0.f, 3.f));
+    vcttest::addQuad(s, {-4, 0, -4}, {0, 0, 8}, {8, 0, 0}, floor);  // normal +y
+    vcttest::addBox(s, {-1, 0, -1}, {1, 1.5f, 1}, box);
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.3f, -1.f, 0.2f));
+    sun.color = glm::vec3(2.f);
+    s.lights.push_back(sun);
+    vcttest::finish(s);
+    return s;
+}
+
+// Bitwise equality of two grids' active sets and values.
+template <typename GridT>
+bool sameBits(const GridT& a, const GridT& b) {
+    if (a.activeVoxelCount() != b.activeVoxelCount()) return false;
+    auto acc = b.getConstAccessor();
+    for (auto it = a.cbeginValueOn(); it; ++it) {
+        typename GridT::ValueType vb;
+        if (!it.isVoxelValue() || !acc.probeValue(it.getCoord(), vb)) return false;
+        typename GridT::ValueType va = *it;
+        if (std::memcmp(&va, &vb, sizeof(va)) != 0) return false;
+    }
+    return true;
+}
+
+bool sameScene(const SparseVoxelScene& a, const SparseVoxelScene& b) {
+    bool same = sameBits(*a.albedo, *b.albedo) && sameBits(*a.normal, *b.normal) &&
+                sameBits(*a.emission, *b.emission) && a.opacityLevels.size() == b.opacityLevels.size() &&
+                a.radianceLevels.size() == b.radianceLevels.size();
+    for (size_t k = 0; same && k < a.opacityLevels.size(); ++k) same = sameBits(*a.opacityLevels[k], *b.opacityLevels[k]);
+    for (size_t k = 0; same && k < a.radianceLevels.size(); ++k)
+        same = sameBits(*a.radianceLevels[k], *b.radianceLevels[k]);
+    return same;
+}
+
+TEST(VdbVoxelize, DeterministicAcrossRunsAndThreadCounts) {
+    Scene s = floorAndBox();
+    // Many overlapping triangles so that threads share voxels.
+    Scene t = awkwardTriangles(7);
+    ParamMap params;
+    auto build = [&](const Scene& sc, int threads) {
+        tbb::task_arena arena(threads);
+        SparseVoxelScene v;
+        arena.execute([&] { v = buildSparseVoxels(sc, 64, true, 1.f, params); });
+        return v;
+    };
+    for (const Scene* sc : {&s, &t}) {
+        SparseVoxelScene a = build(*sc, 2), b = build(*sc, 2), c = build(*sc, 1);
+        EXPECT_GT(a.stats.activeVoxels, 100u);
+        EXPECT_TRUE(sameScene(a, b)) << "two runs differ";
+        EXPECT_TRUE(sameScene(a, c)) << "1 vs 2 threads differ";
+    }
+}
+
+TEST(VdbVoxelize, AveragesMatchQuantizedMaterial) {
+    Scene s = floorAndBox();
+    SparseVoxelScene v = voxelizeSparse(s, 32);
+    // A floor voxel far from the box: only the floor overlaps it.
+    glm::vec3 p = (glm::vec3(-3.3f, 0.f, -3.3f) - v.origin) / v.voxelSize;
+    openvdb::Coord ijk(int(std::floor(p.x)), int(std::floor(p.y)), int(std::floor(p.z)));
+    ASSERT_TRUE(v.opacity->tree().isValueOn(ijk));
+    EXPECT_EQ(v.opacity->tree().getValue(ijk), 1.f);
+    openvdb::Vec3s a = v.albedo->tree().getValue(ijk), n = v.normal->tree().getValue(ijk);
+    // 12-bit fixed point of the GPU path: round(x * 4095) / 4095.
+    for (int c = 0; c < 3; ++c) {
+        double expected = std::round(double(glm::vec3(0.2f, 0.5f, 0.8f)[c]) * 4095.0) / 4095.0;
+        EXPECT_NEAR(a[c], expected, 1e-6);
+    }
+    EXPECT_NEAR(n[1], 1.f, 1e-6);
+    EXPECT_NEAR(std::abs(n[0]) + std::abs(n[2]), 0.f, 1e-6);
+    EXPECT_EQ(v.emission->tree().getValue(ijk), openvdb::Vec3s(0.f));
+    // A voxel on the box top (emissive): emission 3 in blue.
+    glm::vec3 q = (glm::vec3(0.1f, 1.5f, 0.1f) - v.origin) / v.voxelSize;
+    openvdb::Coord top(int(std::floor(q.x)), int(std::floor(q.y)), int(std::floor(q.z)));
+    ASSERT_TRUE(v.opacity->tree().isValueOn(top));
+    EXPECT_NEAR(v.emission->tree().getValue(top)[2], 3.f, 1e-3);
+}
+
+// A lit, unshadowed floor voxel: L = albedo / pi * E, E = lux * cos; the same at two resolutions.
+TEST(VdbVoxelize, InjectedRadianceIsResolutionIndependent) {
+    Scene s = floorAndBox();
+    const glm::vec3 toSun = -s.lights[0].direction;
+    for (int res : {32, 64}) {
+        ParamMap params;
+        SparseVoxelScene v = buildSparseVoxels(s, res, true, 1.f, params);
+        glm::vec3 p = (glm::vec3(-3.3f, 0.f, -3.3f) - v.origin) / v.voxelSize;
+        openvdb::Coord ijk(int(std::floor(p.x)), int(std::floor(p.y)), int(std::floor(p.z)));
+        openvdb::Vec3s L = v.radiance->tree().getValue(ijk), a = v.albedo->tree().getValue(ijk);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(L[c], a[c] / kPi * 2.0 * toSun.y, 1e-4) << "res " << res;
+        // In the box's shadow (the sun comes from -x, -z, above): only the floor, unlit.
+        glm::vec3 sh = (glm::vec3(1.2f, 0.f, 1.1f) - v.origin) / v.voxelSize;
+        openvdb::Coord sij(int(std::floor(sh.x)), int(std::floor(sh.y)), int(std::floor(sh.z)));
+        ASSERT_TRUE(v.opacity->tree().isValueOn(sij));
+        EXPECT_EQ(v.radiance->tree().getValue(sij), openvdb::Vec3s(0.f)) << "res " << res;
+        EXPECT_GT(v.stats.memoryBytes, 0u);
+        EXPECT_GT(v.stats.denseBytes, 0u);
+    }
+}
+
+// Levels against an independent dense box filter with GL's child ranges.
+TEST(VdbVoxelize, LevelsMatchDenseBoxFilter) {
+    Scene s = floorAndBox();
+    ParamMap params;
+    SparseVoxelScene v = buildSparseVoxels(s, 24, true, 1.f, params);  // non-power-of-two sizes
+    ASSERT_EQ(int(v.opacityLevels.size()), v.levels);
+    glm::ivec3 size = v.resolution;
+    auto idx = [](glm::ivec3 sz, int x, int y, int z) { return (size_t(z) * sz.y + y) * sz.x + x; };
+    std::vector<float> dense(size_t(size.x) * size.y * size.z, 0.f);
+    std::vector<glm::vec3> denseL(dense.size(), glm::vec3(0.f));
+    auto opAcc = v.opacity->getConstAccessor();
+    auto rAcc = v.radiance->getConstAccessor();
+    for (int z = 0; z < size.z; ++z)
+        for (int y = 0; y < size.y; ++y)
+            for (int x = 0; x < size.x; ++x) {
+                dense[idx(size, x, y, z)] = opAcc.getValue({x, y, z});
+                auto r = rAcc.getValue({x, y, z});
+                denseL[idx(size, x, y, z)] = glm::vec3(r[0], r[1], r[2]);
+            }
+    for (int level = 1; level < v.levels; ++level) {
+        glm::ivec3 dst = glm::max(size / 2, glm::ivec3(1));
+        std::vector<float> next(size_t(dst.x) * dst.y * dst.z);
+        std::vector<glm::vec3> nextL(next.size());
+        for (int z = 0; z < dst.z; ++z)
+            for (int y = 0; y < dst.y; ++y)
+                for (int x = 0; x < dst.x; ++x) {
+                    glm::ivec3 p(x, y, z), lo, hi;
+                    for (int a = 0; a < 3; ++a) {
+                        lo[a] = std::min(2 * p[a], size[a] - 1);
+                        hi[a] = p[a] == dst[a] - 1 ? size[a] - 1 : std::min(2 * p[a] + 1, size[a] - 1);
+                    }
+                    double sum = 0;
+                    glm::dvec3 sumL(0.0);
+                    for (int cz = lo.z; cz <= hi.z; ++cz)
+                        for (int cy = lo.y; cy <= hi.y; ++cy)
+                            for (int cx = lo.x; cx <= hi.x; ++cx) {
+                                sum += dense[idx(size, cx, cy, cz)];
+                                sumL += glm::dvec3(denseL[idx(size, cx, cy, cz)]);
+                            }
+                    glm::ivec3 n = hi - lo + 1;
+                    next[idx(dst, x, y, z)] = float(sum / (n.x * n.y * n.z));
+                    nextL[idx(dst, x, y, z)] = glm::vec3(sumL / double(n.x * n.y * n.z));
+                }
+        dense.swap(next);
+        denseL.swap(nextL);
+        size = dst;
+        ASSERT_EQ(v.levelSize(level), size);
+        auto acc = v.opacityLevels[size_t(level)]->getConstAccessor();
+        auto racc = v.radianceLevels[size_t(level)]->getConstAccessor();
+        double maxErr = 0, maxErrL = 0;
+        size_t nonzero = 0;
+        for (int z = 0; z < size.z; ++z)
+            for (int y = 0; y < size.y; ++y)
+                for (int x = 0; x < size.x; ++x) {
+                    float d = dense[idx(size, x, y, z)];
+                    nonzero += d > 0.f;
+                    EXPECT_EQ(acc.isValueOn({x, y, z}), d > 0.f);
+                    maxErr = std::max(maxErr, double(std::abs(acc.getValue({x, y, z}) - d)));
+                    auto r = racc.getValue({x, y, z});
+                    maxErrL = std::max(maxErrL, double(glm::length(glm::vec3(r[0], r[1], r[2]) - denseL[idx(size, x, y, z)])));
+                }
+        EXPECT_LT(maxErr, 1e-5) << "level " << level;
+        EXPECT_LT(maxErrL, 1e-4) << "level " << level;
+        EXPECT_GT(nonzero, 0u);
+    }
+    EXPECT_EQ(std::max(size.x, std::max(size.y, size.z)), 1);  // the top level is one voxel along the longest axis
+}
+
+TEST(VdbVoxelize, RejectsBadInput) {
+    Scene s = floorAndBox();
+    ParamMap params;
+    EXPECT_THROW(buildSparseVoxels(s, 2, false, 1.f, params), std::invalid_argument);
+    EXPECT_THROW(buildSparseVoxels(s, 32, true, -1.f, params), std::invalid_argument);
+    ParamMap bounces;
+    bounces.set("vct.bounces", "1");
+    EXPECT_THROW(buildSparseVoxels(s, 32, true, 1.f, bounces), std::invalid_argument);
+    Scene bad = s;
+    bad.positions[0].x = std::nanf("");
+    EXPECT_THROW(voxelizeSparse(bad, 32), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace vct
