@@ -8,7 +8,7 @@ ASAN_BUILD ?= build-asan
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: deps build render test asan bench scenes clean
+.PHONY: deps build render test asan bench scenes results clean
 
 deps:
 	@bash scripts/install-deps.sh
@@ -37,6 +37,10 @@ scenes: build
 
 bench: build
 	@for b in $(BUILD)/bench_*; do echo "== $$b"; ./$$b; done
+
+# Regenerates docs/results.md and docs/results/*.svg from sweeps/study.json.
+results: build
+	python3 scripts/make_results.py --vct ./$(BUILD)/vct
 
 clean:
 	rm -rf $(BUILD) $(ASAN_BUILD) out

@@ -7,7 +7,7 @@ packages=(
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libglm-dev
   libopenvdb-dev libboost-iostreams-dev libtinygltf-dev libstb-dev nlohmann-json3-dev
   libopenimageio-dev libopencv-core-dev libembree-dev libtbb-dev libcli11-dev
-  libgtest-dev libbenchmark-dev
+  libgtest-dev libbenchmark-dev chromium python3-matplotlib
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -16,7 +16,9 @@ void main() {
     uint material = sceneTriMaterial[tri];
     vec4 base = scene_baseColor(material, vUv, -1.0);
     GpuMaterial m = sceneMaterials[material];
+#ifndef SCENE_NO_ALPHA_MASK
     if ((m.flags & MATERIAL_ALPHA_MASK) != 0 && base.a < m.alphaCutoff) discard;
+#endif
 
     // Geometric normal from the triangle itself (exact, unlike screen-space derivatives).
     vec3 p0 = sceneVertices[sceneIndices[3u * tri + 0u]].position.xyz;

@@ -23,37 +23,78 @@ uniform float uShadowOffset;  // voxels along the normal before the shadow ray s
 const float PI = 3.14159265358979;
 const float RADIANCE_MAX = RADIANCE_FORMAT_MAX;
 
-// Transmittance from `o` (voxel units) along unit `d` up to distance tMax, compositing the
-// opacity of every voxel the segment crosses; stops once it is ~opaque.
-float inject_visibility(vec3 o, vec3 d, float tMax) {
+// Transmittance from `o` (voxel units of `opacity`, `res` voxels per axis) along unit `d` up
+// to distance tMax, compositing the opacity of every voxel the segment crosses; stops once it
+// is ~opaque.
+float inject_march(sampler3D opacity, ivec3 res, vec3 o, vec3 d, float tMax) {
     // Clip to the grid box: outside it there is nothing to block.
     vec3 invD;
     for (int a = 0; a < 3; ++a) invD[a] = d[a] != 0.0 ? 1.0 / d[a] : 1.0e30;
-    vec3 t0 = (vec3(0.0) - o) * invD, t1 = (vec3(uResolution) - o) * invD;
+    vec3 t0 = (vec3(0.0) - o) * invD, t1 = (vec3(res) - o) * invD;
     vec3 tNear = min(t0, t1), tFar = max(t0, t1);
     float tEnter = max(0.0, max(tNear.x, max(tNear.y, tNear.z)));
     float tExit = min(tMax, min(tFar.x, min(tFar.y, tFar.z)));
     if (!(tEnter < tExit)) return 1.0;
     vec3 p = o + d * tEnter;
-    ivec3 cell = clamp(ivec3(floor(p)), ivec3(0), uResolution - 1);
+    ivec3 cell = clamp(ivec3(floor(p)), ivec3(0), res - 1);
     ivec3 stepDir = ivec3(sign(d));
     vec3 tDelta = abs(invD);
     vec3 tNext = vec3(tExit + 1.0);
     for (int a = 0; a < 3; ++a)
         if (d[a] != 0.0) tNext[a] = tEnter + ((float(cell[a]) + (d[a] > 0.0 ? 1.0 : 0.0)) - p[a]) * invD[a];
     float transmittance = 1.0;
-    int maxSteps = uResolution.x + uResolution.y + uResolution.z + 3;
+    int maxSteps = res.x + res.y + res.z + 3;
     for (int i = 0; i < maxSteps; ++i) {
-        transmittance *= 1.0 - texelFetch(uOpacity, cell, 0).r;
+        transmittance *= 1.0 - texelFetch(opacity, cell, 0).r;
         if (transmittance < 0.01) return 0.0;
         float tn = min(tNext.x, min(tNext.y, tNext.z));
         if (tn >= tExit) break;
         int a = tNext.x == tn ? 0 : (tNext.y == tn ? 1 : 2);
         cell[a] += stepDir[a];
         tNext[a] += tDelta[a];
-        if (cell[a] < 0 || cell[a] >= uResolution[a]) break;
+        if (cell[a] < 0 || cell[a] >= res[a]) break;
     }
     return transmittance;
+}
+
+#ifdef OUTER_LEVELS
+// Clipmap levels (src/clipmap): the coarser levels around this one, innermost first. A shadow
+// ray that leaves this level's box continues in each coarser level from where it left the
+// previous one, so occluders outside the box still cast shadows.
+uniform sampler3D uOuterOpacity[OUTER_LEVELS];
+uniform vec4 uOuterGrid[OUTER_LEVELS];  // xyz = origin (world), w = voxel size
+uniform int uOuterResolution;           // voxels per axis (cubic levels)
+uniform int uOuterCount;
+
+// Distance along d from o (inside the box [lo, hi]) to where it leaves the box.
+float inject_exitDistance(vec3 o, vec3 d, vec3 lo, vec3 hi) {
+    float t = 3.4e38;
+    for (int a = 0; a < 3; ++a) {
+        if (d[a] > 0.0) t = min(t, (hi[a] - o[a]) / d[a]);
+        else if (d[a] < 0.0) t = min(t, (lo[a] - o[a]) / d[a]);
+    }
+    return max(t, 0.0);
+}
+#endif
+
+// Transmittance from voxel-space `o` along `d` over tMax voxels: this grid, then the outer levels.
+float inject_visibility(vec3 o, vec3 d, float tMax) {
+    float v = inject_march(uOpacity, uResolution, o, d, tMax);
+#ifdef OUTER_LEVELS
+    vec3 oWorld = uGridOrigin + o * uVoxelSize;
+    float tMaxWorld = tMax * uVoxelSize;
+    vec3 lo = uGridOrigin, hi = uGridOrigin + vec3(uResolution) * uVoxelSize;
+    for (int k = 0; k < uOuterCount && v >= 0.01; ++k) {
+        float tExit = inject_exitDistance(oWorld, d, lo, hi);
+        if (tExit >= tMaxWorld) break;
+        vec4 g = uOuterGrid[k];
+        vec3 start = (oWorld + d * tExit - g.xyz) / g.w;
+        v *= inject_march(uOuterOpacity[k], ivec3(uOuterResolution), start, d, (tMaxWorld - tExit) / g.w);
+        lo = g.xyz;
+        hi = g.xyz + vec3(uOuterResolution) * g.w;
+    }
+#endif
+    return v;
 }
 
 // Irradiance (W/m^2 per channel, here lux-like photometric units as given) from light i on

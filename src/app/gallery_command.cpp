@@ -33,7 +33,8 @@ int runGalleryCommand(CLI::App& app) {
     (void)app;
     if (!gGalleryCmd || !*gGalleryCmd) return -1;
     GallerySettings s = gGallery;
-    if (isatty(STDERR_FILENO)) s.progress = [](const std::string& line) { std::cerr << "vct gallery: " << line << "\n"; };
+    if (isatty(STDERR_FILENO))
+        s.progress = [](const std::string& line) { std::cerr << "vct gallery: " << line << "\n"; };
     const GallerySummary summary = writeGallery(s);
     std::cout << "wrote " << s.outputDir << "/index.html: " << summary.caseCount << " case(s), "
               << summary.pages.size() << " page(s), " << summary.imageCount << " image(s)\n";

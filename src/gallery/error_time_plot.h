@@ -9,11 +9,11 @@
 namespace vct {
 
 struct PlotPoint {
-    std::string label;   // shown in the tooltip and beside front points
-    double timeMs = 0;   // > 0 (plotted on a log axis; non-positive times are left out)
-    double error = 0;    // >= 0, finite (others are left out)
-    std::string href;    // link of the point (e.g. "#b=ao_gtao"); empty: no link
-    std::string group;   // colour group (e.g. the method family); points of a group share a colour
+    std::string label;  // shown in the tooltip and beside front points
+    double timeMs = 0;  // > 0 (plotted on a log axis; non-positive times are left out)
+    double error = 0;   // >= 0, finite (others are left out)
+    std::string href;   // link of the point (e.g. "#b=ao_gtao"); empty: no link
+    std::string group;  // colour group (e.g. the method family); points of a group share a colour
 };
 
 // Indices of the Pareto-optimal points (minimize time and error), sorted by time. A point is
@@ -21,10 +21,10 @@ struct PlotPoint {
 std::vector<size_t> paretoFront(const std::vector<PlotPoint>& points);
 
 struct PlotStyle {
-    int width = 560;            // SVG width in px
-    int height = 340;           // SVG height in px
+    int width = 560;                  // SVG width in px
+    int height = 340;                 // SVG height in px
     std::string errorLabel = "RMSE";  // y axis title
-    std::string id;             // id attribute of the <svg> (for CSS/JS); empty: none
+    std::string id;                   // id attribute of the <svg> (for CSS/JS); empty: none
 };
 
 // The SVG element (a string starting with "<svg"), self-contained: no external references.

@@ -14,14 +14,14 @@ struct GallerySettings {
     std::vector<std::string> inputs;  // compare dirs or sweep dirs (see findGalleryInputs)
     std::string outputDir;            // the site; created; files in it are overwritten
     std::string title = "vct comparison gallery";
-    int thumbnailWidth = 192;         // px, >= 16: index thumbnails are box-downsampled to this
+    int thumbnailWidth = 192;  // px, >= 16: index thumbnails are box-downsampled to this
     std::function<void(const std::string&)> progress;  // a line per case (may be empty)
 };
 
 struct GallerySummary {
     int caseCount = 0;
-    int imageCount = 0;                 // PNGs written (display, error maps, thumbnails, overlays)
-    std::vector<std::string> pages;     // site-relative HTML files, index.html first
+    int imageCount = 0;              // PNGs written (display, error maps, thumbnails, overlays)
+    std::vector<std::string> pages;  // site-relative HTML files, index.html first
 };
 
 // Writes the site. Throws std::invalid_argument for bad settings or inputs, std::runtime_error

@@ -67,7 +67,8 @@ std::vector<GalleryInput> findGalleryInputs(const std::vector<std::string>& dirs
     };
     for (const std::string& d : dirs) {
         const fs::path dir(d);
-        if (!fs::is_directory(dir)) throw std::invalid_argument("gallery input '" + d + "' is not a directory");
+        if (!fs::is_directory(dir))
+            throw std::invalid_argument("gallery input '" + d + "' is not a directory");
         if (fs::exists(dir / "results.json")) {
             add(dir, dirName(dir), dirName(dir));
             continue;
@@ -77,8 +78,9 @@ std::vector<GalleryInput> findGalleryInputs(const std::vector<std::string>& dirs
             for (const auto& e : fs::directory_iterator(dir / "cases"))
                 if (e.is_directory() && fs::exists(e.path() / "results.json")) cases.push_back(e.path());
         if (cases.empty())
-            throw std::invalid_argument("gallery input '" + d +
-                                        "' has neither results.json (vct compare) nor cases/*/results.json (vct sweep)");
+            throw std::invalid_argument(
+                "gallery input '" + d +
+                "' has neither results.json (vct compare) nor cases/*/results.json (vct sweep)");
         std::sort(cases.begin(), cases.end());
         for (const auto& c : cases) {
             const std::string caseName = c.filename().string();

@@ -10,10 +10,10 @@
 namespace vct {
 
 struct GalleryInput {
-    std::string id;       // unique, file-name-safe: names the case's page and data folder
-    std::string title;    // "offscreen_overhang  (g1)" for people
-    std::string dir;      // the comparison directory
-    nlohmann::json results;  // its results.json
+    std::string id;            // unique, file-name-safe: names the case's page and data folder
+    std::string title;         // "offscreen_overhang  (g1)" for people
+    std::string dir;           // the comparison directory
+    nlohmann::json results;    // its results.json
     std::string measuredDate;  // results.json's modification time (UTC), "" if unknown
 };
 

@@ -13,12 +13,23 @@ std::string escapeHtml(const std::string& text) {
     out.reserve(text.size());
     for (char c : text) {
         switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        case '\'': out += "&#39;"; break;
-        default: out += c;
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            case '\'':
+                out += "&#39;";
+                break;
+            default:
+                out += c;
         }
     }
     return out;
@@ -49,8 +60,10 @@ std::string formatNumber(double value, int digits) {
 std::string formatMs(double ms) {
     if (!std::isfinite(ms)) return "\xE2\x80\x93";
     char buf[64];
-    if (ms >= 1000.0) std::snprintf(buf, sizeof buf, "%.3g s", ms / 1000.0);
-    else std::snprintf(buf, sizeof buf, "%.3g ms", ms);
+    if (ms >= 1000.0)
+        std::snprintf(buf, sizeof buf, "%.3g s", ms / 1000.0);
+    else
+        std::snprintf(buf, sizeof buf, "%.3g ms", ms);
     return buf;
 }
 

@@ -13,10 +13,10 @@ namespace vct {
 namespace {
 
 struct Column {
-    std::string key;    // "ao: gtao"
+    std::string key;  // "ao: gtao"
     double errorRankSum = 0, timeRankSum = 0;
     int rows = 0;
-    int order = 0;      // first appearance
+    int order = 0;  // first appearance
 };
 
 // Rank (0 = best) of values[i] among the finite values of a row, normalized to [0, 1].
@@ -26,7 +26,8 @@ std::vector<double> normalizedRanks(const std::vector<double>& values) {
     for (size_t i = 0; i < values.size(); ++i)
         if (std::isfinite(values[i])) idx.push_back(i);
     std::sort(idx.begin(), idx.end(), [&](size_t a, size_t b) { return values[a] < values[b]; });
-    for (size_t k = 0; k < idx.size(); ++k) ranks[idx[k]] = idx.size() > 1 ? double(k) / (idx.size() - 1) : 0.0;
+    for (size_t k = 0; k < idx.size(); ++k)
+        ranks[idx[k]] = idx.size() > 1 ? double(k) / (idx.size() - 1) : 0.0;
     return ranks;
 }
 
@@ -34,10 +35,12 @@ std::string numAttr(double v) { return std::isfinite(v) ? formatNumber(v, 9) : "
 
 }  // namespace
 
-std::string indexPage(const std::vector<SiteCase>& cases, const std::string& title, const std::string& generated) {
+std::string indexPage(const std::vector<SiteCase>& cases, const std::string& title,
+                      const std::string& generated) {
     bool anyGi = false, anyAo = false, anyRoi = false;
     for (const auto& c : cases)
-        for (const auto& r : c.input.results["records"]) (r.value("kind", "ao") == "gi" ? anyGi : anyAo) = true;
+        for (const auto& r : c.input.results["records"])
+            (r.value("kind", "ao") == "gi" ? anyGi : anyAo) = true;
     const bool withKind = anyGi && anyAo;
     // Columns and their mean ranks (error: rmse; time: time_ms) over the rows that have them.
     std::vector<Column> columns;
@@ -67,24 +70,26 @@ std::string indexPage(const std::vector<SiteCase>& cases, const std::string& tit
     }
 
     std::ostringstream s;
-    s << pageHead(title) << "<body class=\"index\">\n<header><h1>" << escapeHtml(title) << "</h1>\n<p>" << cases.size()
-      << " case(s), " << columns.size()
+    s << pageHead(title) << "<body class=\"index\">\n<header><h1>" << escapeHtml(title) << "</h1>\n<p>"
+      << cases.size() << " case(s), " << columns.size()
       << " method variant(s). Each thumbnail links to its comparison page; numbers are the median time per "
          "frame and the RMSE against the ray-traced reference on valid pixels"
-      << (anyRoi ? " (ROI: RMSE inside the region darkened by off-screen occluders)" : "") << ".</p>\n</header>\n";
+      << (anyRoi ? " (ROI: RMSE inside the region darkened by off-screen occluders)" : "")
+      << ".</p>\n</header>\n";
 
     // The grid.
     s << "<section>\n<h2>Scenes &times; methods</h2>\n<div class=\"sortbar\">Order method columns by: "
       << "<button type=\"button\" data-order=\"run\" class=\"active\">run order</button> "
       << "<button type=\"button\" data-order=\"error\">error (mean rank)</button> "
       << "<button type=\"button\" data-order=\"time\">time (mean rank)</button></div>\n"
-      << "<div class=\"grid-wrap\"><table class=\"grid\" id=\"grid\">\n<thead><tr><th class=\"scene-col\">scene / "
+      << "<div class=\"grid-wrap\"><table class=\"grid\" id=\"grid\">\n<thead><tr><th "
+         "class=\"scene-col\">scene / "
          "reference</th>";
     for (const Column& col : columns) {
         const double n = std::max(1, col.rows);
         s << "<th data-col=\"" << col.order << "\" data-run=\"" << col.order << "\" data-error=\""
-          << formatNumber(col.errorRankSum / n, 6) << "\" data-time=\"" << formatNumber(col.timeRankSum / n, 6)
-          << "\">" << escapeHtml(col.key) << "</th>";
+          << formatNumber(col.errorRankSum / n, 6) << "\" data-time=\""
+          << formatNumber(col.timeRankSum / n, 6) << "\">" << escapeHtml(col.key) << "</th>";
     }
     s << "</tr></thead>\n<tbody>\n";
     for (const auto& c : cases) {
@@ -93,12 +98,12 @@ std::string indexPage(const std::vector<SiteCase>& cases, const std::string& tit
           << escapeHtml(c.input.title) << "</a>";
         for (const char* refId : {"reference_ao", "reference_gi"})
             if (const SiteImage* ref = c.image(refId))
-                s << "<a class=\"thumb\" href=\"" << encodeUrlPath(c.page) << "#b=" << ref->id << "\"><img src=\""
-                  << encodeUrlPath(ref->thumb) << "\" alt=\"" << escapeHtml(ref->label) << "\" title=\""
-                  << escapeHtml(ref->label) << "\"></a>";
+                s << "<a class=\"thumb\" href=\"" << encodeUrlPath(c.page) << "#b=" << ref->id
+                  << "\"><img src=\"" << encodeUrlPath(ref->thumb) << "\" alt=\"" << escapeHtml(ref->label)
+                  << "\" title=\"" << escapeHtml(ref->label) << "\"></a>";
         s << "<div class=\"small\">" << c.input.results.value("width", 0) << "&times;"
-          << c.input.results.value("height", 0) << ", R = " << formatNumber(jsonNumber(c.input.results, "radius"))
-          << "</div></th>";
+          << c.input.results.value("height", 0)
+          << ", R = " << formatNumber(jsonNumber(c.input.results, "radius")) << "</div></th>";
         // Best error and time of the row, for highlighting.
         double bestErr = INFINITY, bestTime = INFINITY;
         for (const auto& r : records) {
@@ -112,13 +117,14 @@ std::string indexPage(const std::vector<SiteCase>& cases, const std::string& tit
             const size_t col = columnOf[recordLabel(r, withKind)];
             if (!cells[col].empty()) continue;  // same label twice in a case: the first one
             std::ostringstream cell;
-            const double e = jsonNumber(r, "rmse"), t = jsonNumber(r, "time_ms"), roi = jsonNumber(r, "roi_rmse");
+            const double e = jsonNumber(r, "rmse"), t = jsonNumber(r, "time_ms"),
+                         roi = jsonNumber(r, "roi_rmse");
             const int im = c.recordImage[i];
             if (im >= 0) {
                 const SiteImage& img = c.images[im];
-                cell << "<a class=\"thumb\" href=\"" << encodeUrlPath(c.page) << "#b=" << img.id << "\"><img src=\""
-                     << encodeUrlPath(img.thumb) << "\" alt=\"" << escapeHtml(img.label) << "\" title=\""
-                     << escapeHtml(img.label) << "\"></a>";
+                cell << "<a class=\"thumb\" href=\"" << encodeUrlPath(c.page) << "#b=" << img.id
+                     << "\"><img src=\"" << encodeUrlPath(img.thumb) << "\" alt=\"" << escapeHtml(img.label)
+                     << "\" title=\"" << escapeHtml(img.label) << "\"></a>";
             }
             cell << "<div class=\"nums\"><span class=\"time" << (t == bestTime ? " best" : "") << "\">"
                  << formatMs(t) << "</span><span class=\"err" << (e == bestErr ? " best" : "") << "\">RMSE "
@@ -128,8 +134,8 @@ std::string indexPage(const std::vector<SiteCase>& cases, const std::string& tit
             cells[col] = cell.str();
         }
         for (size_t k = 0; k < columns.size(); ++k)
-            s << "<td data-col=\"" << columns[k].order << "\">" << (cells[k].empty() ? "<span class=\"na\">&ndash;</span>" : cells[k])
-              << "</td>";
+            s << "<td data-col=\"" << columns[k].order << "\">"
+              << (cells[k].empty() ? "<span class=\"na\">&ndash;</span>" : cells[k]) << "</td>";
         s << "</tr>\n";
     }
     s << "</tbody></table></div>\n</section>\n";
@@ -138,8 +144,10 @@ std::string indexPage(const std::vector<SiteCase>& cases, const std::string& tit
     s << "<section>\n<h2>All results</h2>\n<p class=\"small\">Click a column header to sort.</p>\n"
       << "<table class=\"records sortable\" id=\"all-records\">\n<thead><tr>"
       << "<th data-type=\"text\">case</th><th data-type=\"text\">kind</th><th data-type=\"text\">method</th>"
-      << "<th data-type=\"num\">time (ms)</th><th data-type=\"num\">RMSE</th><th data-type=\"num\">ROI RMSE</th>"
-      << "<th data-type=\"num\">non-ROI RMSE</th><th data-type=\"num\">MAE</th><th data-type=\"num\">bias</th>"
+      << "<th data-type=\"num\">time (ms)</th><th data-type=\"num\">RMSE</th><th data-type=\"num\">ROI "
+         "RMSE</th>"
+      << "<th data-type=\"num\">non-ROI RMSE</th><th data-type=\"num\">MAE</th><th "
+         "data-type=\"num\">bias</th>"
       << "<th data-type=\"num\">PSNR (dB)</th><th data-type=\"num\">SSIM</th></tr></thead>\n<tbody>\n";
     for (const auto& c : cases) {
         const auto& records = c.input.results["records"];
@@ -148,8 +156,10 @@ std::string indexPage(const std::vector<SiteCase>& cases, const std::string& tit
             const int im = c.recordImage[i];
             const std::string href = encodeUrlPath(c.page) + (im >= 0 ? "#b=" + c.images[im].id : "");
             s << "<tr><td><a href=\"" << href << "\">" << escapeHtml(c.input.title) << "</a></td><td>"
-              << escapeHtml(r.value("kind", "ao")) << "</td><td>" << escapeHtml(recordLabel(r, false)) << "</td>";
-            for (const char* key : {"time_ms", "rmse", "roi_rmse", "nonroi_rmse", "mae", "bias", "psnr", "ssim"}) {
+              << escapeHtml(r.value("kind", "ao")) << "</td><td>" << escapeHtml(recordLabel(r, false))
+              << "</td>";
+            for (const char* key :
+                 {"time_ms", "rmse", "roi_rmse", "nonroi_rmse", "mae", "bias", "psnr", "ssim"}) {
                 const double v = jsonNumber(r, key);
                 s << "<td class=\"num\" data-value=\"" << numAttr(v) << "\">" << formatNumber(v) << "</td>";
             }

@@ -9,7 +9,8 @@ std::string sceneCredit(const std::string& scenePath) {
     // Copied from shared/scenes/README.md; keep in step when scenes are added there.
     static const std::map<std::string, std::string> kThirdParty = {
         {"mcguire_CornellBox-Original.glb",
-         "Cornell Box by Guedis Cardenas and Morgan McGuire, Williams College 2011 (McGuire Computer Graphics "
+         "Cornell Box by Guedis Cardenas and Morgan McGuire, Williams College 2011 (McGuire Computer "
+         "Graphics "
          "Archive); CC BY 3.0"},
         {"floor_cube.glb", "made for this project (Blender)"},
         {"floor_suzanne.glb", "made for this project (Blender's Suzanne primitive)"},
@@ -18,11 +19,14 @@ std::string sceneCredit(const std::string& scenePath) {
          "Stanford bunny (Stanford 3D Scanning Repository), via the McGuire Computer Graphics Archive; "
          "Stanford scan terms"},
         {"mcguire_sponza.glb",
-         "Dabrovic Sponza by Marko Dabrovic, fixes by Kenzie Lamar, McGuire Computer Graphics Archive; CC BY-NC"},
+         "Dabrovic Sponza by Marko Dabrovic, fixes by Kenzie Lamar, McGuire Computer Graphics Archive; CC "
+         "BY-NC"},
         {"mcguire_sibenik.glb",
-         "Sibenik cathedral by Marko Dabrovic, fixes by Kenzie Lamar, McGuire Computer Graphics Archive; CC BY-NC"},
+         "Sibenik cathedral by Marko Dabrovic, fixes by Kenzie Lamar, McGuire Computer Graphics Archive; CC "
+         "BY-NC"},
         {"mcguire_lost_empire.glb",
-         "\"Lost Empire\" (Vokselia Minecraft world) via Mineways, McGuire Computer Graphics Archive; CC BY 3.0"},
+         "\"Lost Empire\" (Vokselia Minecraft world) via Mineways, McGuire Computer Graphics Archive; CC BY "
+         "3.0"},
         {"mcguire_conference.glb",
          "Conference room by Greg Ward, recreated by Kenzie Lamar, McGuire Computer Graphics Archive; "
          "public domain"},

@@ -55,22 +55,26 @@ std::string viewerSection(const SiteCase& c, const SiteImage* a, const SiteImage
     if (b && !b->errorId.empty()) err = c.image(b->errorId);
     std::ostringstream s;
     auto img = [&](const char* id, const SiteImage* im, const char* alt) {
-        s << "<img class=\"px\" id=\"" << id << "\" src=\"" << (im ? encodeUrlPath(im->src) : "") << "\" width=\"" << W
-          << "\" height=\"" << H << "\" alt=\"" << alt << "\" draggable=\"false\">";
+        s << "<img class=\"px\" id=\"" << id << "\" src=\"" << (im ? encodeUrlPath(im->src) : "")
+          << "\" width=\"" << W << "\" height=\"" << H << "\" alt=\"" << alt << "\" draggable=\"false\">";
     };
     s << "<section class=\"compare\" id=\"compare\">\n<h2>Compare</h2>\n<div class=\"controls\">\n"
       << "<label>A (left) " << imageSelect(c, "sel-a", a ? a->id : "") << "</label>\n"
       << "<label>B (right) " << imageSelect(c, "sel-b", b ? b->id : "") << "</label>\n"
-      << "<span class=\"group\"><button type=\"button\" id=\"btn-mode-slider\" class=\"active\">slider</button>"
+      << "<span class=\"group\"><button type=\"button\" id=\"btn-mode-slider\" "
+         "class=\"active\">slider</button>"
       << "<button type=\"button\" id=\"btn-mode-flip\">flip</button>"
-      << "<button type=\"button\" id=\"btn-flip\" title=\"show the other image (key F)\">A &harr; B (F)</button>"
+      << "<button type=\"button\" id=\"btn-flip\" title=\"show the other image (key F)\">A &harr; B "
+         "(F)</button>"
       << "</span>\n<span class=\"group\"><button type=\"button\" id=\"btn-fit\" title=\"key 0\">fit</button>"
-      << "<button type=\"button\" id=\"btn-1x\" title=\"one image pixel per screen pixel (key 1)\">1:1</button>"
+      << "<button type=\"button\" id=\"btn-1x\" title=\"one image pixel per screen pixel (key "
+         "1)\">1:1</button>"
       << "<button type=\"button\" id=\"btn-zoom-in\" title=\"key +\">+</button>"
       << "<button type=\"button\" id=\"btn-zoom-out\" title=\"key -\">&minus;</button></span>\n";
     if (!c.roiOutline.empty())
         s << "<label class=\"group\"><input type=\"checkbox\" id=\"chk-roi\"> ROI outline (R)</label>\n";
-    s << "<span class=\"readout\" id=\"zoom-readout\"></span> <span class=\"readout\" id=\"pixel-readout\"></span>\n"
+    s << "<span class=\"readout\" id=\"zoom-readout\"></span> <span class=\"readout\" "
+         "id=\"pixel-readout\"></span>\n"
       << "</div>\n<input type=\"range\" id=\"slider-range\" min=\"0\" max=\"1000\" value=\"500\" "
          "aria-label=\"split position\">\n<div class=\"views\">\n<figure class=\"view-fig\">\n"
       << "<div class=\"viewport\" id=\"view-main\" data-w=\"" << W << "\" data-h=\"" << H
@@ -80,22 +84,26 @@ std::string viewerSection(const SiteCase& c, const SiteImage* a, const SiteImage
     img("img-b", b, "image B");
     s << "</div>\n";
     if (!c.roiOutline.empty()) {
-        s << "<div class=\"layer overlay roi-layer\" hidden><img class=\"px\" src=\"" << encodeUrlPath(c.roiOutline)
-          << "\" width=\"" << W << "\" height=\"" << H << "\" alt=\"ROI outline\" draggable=\"false\"></div>\n";
+        s << "<div class=\"layer overlay roi-layer\" hidden><img class=\"px\" src=\""
+          << encodeUrlPath(c.roiOutline) << "\" width=\"" << W << "\" height=\"" << H
+          << "\" alt=\"ROI outline\" draggable=\"false\"></div>\n";
     }
     s << "<div class=\"split\" id=\"split\"><div class=\"knob\"></div></div>\n"
       << "<span class=\"tag tag-a\" id=\"tag-a\">" << (a ? escapeHtml(a->label) : "") << "</span>"
       << "<span class=\"tag tag-b\" id=\"tag-b\">" << (b ? escapeHtml(b->label) : "") << "</span>\n</div>\n"
       << "<figcaption>Drag the line to move the split; drag elsewhere to pan; wheel to zoom (about the "
          "cursor); double-click to fit. Keys: F flip, S slider, R ROI, 0 fit, 1 1:1, +/- zoom.</figcaption>\n"
-      << "</figure>\n<figure class=\"view-fig\">\n<div class=\"viewport\" id=\"view-error\" style=\"aspect-ratio: "
+      << "</figure>\n<figure class=\"view-fig\">\n<div class=\"viewport\" id=\"view-error\" "
+         "style=\"aspect-ratio: "
       << W << " / " << H << "\">\n<div class=\"layer\">";
     img("img-err", err, "error map");
     s << "</div>\n";
     if (!c.roiOutline.empty())
-        s << "<div class=\"layer overlay roi-layer\" hidden><img class=\"px\" src=\"" << encodeUrlPath(c.roiOutline)
-          << "\" width=\"" << W << "\" height=\"" << H << "\" alt=\"ROI outline\" draggable=\"false\"></div>\n";
-    s << "<span class=\"tag tag-a\" id=\"err-title\">" << (err ? escapeHtml(err->label) : "no error map") << "</span>\n"
+        s << "<div class=\"layer overlay roi-layer\" hidden><img class=\"px\" src=\""
+          << encodeUrlPath(c.roiOutline) << "\" width=\"" << W << "\" height=\"" << H
+          << "\" alt=\"ROI outline\" draggable=\"false\"></div>\n";
+    s << "<span class=\"tag tag-a\" id=\"err-title\">" << (err ? escapeHtml(err->label) : "no error map")
+      << "</span>\n"
       << "</div>\n<figcaption><div class=\"legend\"><img src=\"" << encodeUrlPath(c.legend)
       << "\" alt=\"error colour scale\"><div class=\"legend-labels\"><span id=\"leg-lo\">&minus;"
       << (err ? formatNumber(err->errorScale) : "") << "</span><span>0</span><span id=\"leg-hi\">+"
@@ -108,12 +116,17 @@ std::string viewerSection(const SiteCase& c, const SiteImage* a, const SiteImage
 std::string plotsSection(const SiteCase& c) {
     const auto& records = c.input.results["records"];
     std::ostringstream s;
-    s << "<section class=\"plots\">\n<h2>Error against time</h2>\n<p class=\"small\">Median time per frame on "
+    s << "<section class=\"plots\">\n<h2>Error against time</h2>\n<p class=\"small\">Median time per frame "
+         "on "
       << escapeHtml(c.input.results.value("gl_renderer", std::string("?")))
       << " (log axis) against the error to the reference. The dashed staircase is the Pareto front: no other "
          "variant is both faster and more accurate than a ringed point. Click a point to show it in the "
          "viewer.</p>\n<div class=\"plot-row\">\n";
-    struct Plot { const char* kind; const char* key; const char* title; };
+    struct Plot {
+        const char* kind;
+        const char* key;
+        const char* title;
+    };
     const Plot plots[] = {{"ao", "rmse", "AO RMSE (valid pixels)"},
                           {"ao", "roi_rmse", "AO RMSE inside the ROI"},
                           {"gi", "rmse", "indirect radiance RMSE"}};
@@ -148,22 +161,29 @@ std::string recordsSection(const SiteCase& c) {
     const auto& records = c.input.results["records"];
     std::ostringstream s;
     s << "<section>\n<h2>Results</h2>\n<table class=\"records sortable\" id=\"records\">\n<thead><tr>"
-      << "<th data-type=\"text\">variant</th><th data-type=\"text\">kind</th><th data-type=\"text\">parameters</th>"
-      << "<th data-type=\"num\">time (ms)</th><th data-type=\"text\">passes (ms)</th><th data-type=\"num\">RMSE</th>"
-      << "<th data-type=\"num\">ROI RMSE</th><th data-type=\"num\">non-ROI RMSE</th><th data-type=\"num\">MAE</th>"
-      << "<th data-type=\"num\">bias</th><th data-type=\"num\">max |e|</th><th data-type=\"num\">PSNR (dB)</th>"
+      << "<th data-type=\"text\">variant</th><th data-type=\"text\">kind</th><th "
+         "data-type=\"text\">parameters</th>"
+      << "<th data-type=\"num\">time (ms)</th><th data-type=\"text\">passes (ms)</th><th "
+         "data-type=\"num\">RMSE</th>"
+      << "<th data-type=\"num\">ROI RMSE</th><th data-type=\"num\">non-ROI RMSE</th><th "
+         "data-type=\"num\">MAE</th>"
+      << "<th data-type=\"num\">bias</th><th data-type=\"num\">max |e|</th><th data-type=\"num\">PSNR "
+         "(dB)</th>"
       << "<th data-type=\"num\">SSIM</th><th data-type=\"text\">files</th></tr></thead>\n<tbody>\n";
     for (size_t i = 0; i < records.size(); ++i) {
         const auto& r = records[i];
         const int im = c.recordImage[i];
         s << "<tr><td>";
-        if (im >= 0) s << "<a href=\"#b=" << escapeHtml(c.images[im].id) << "\">" << escapeHtml(recordLabel(r, false)) << "</a>";
-        else s << escapeHtml(recordLabel(r, false));
+        if (im >= 0)
+            s << "<a href=\"#b=" << escapeHtml(c.images[im].id) << "\">" << escapeHtml(recordLabel(r, false))
+              << "</a>";
+        else
+            s << escapeHtml(recordLabel(r, false));
         s << "</td><td>" << escapeHtml(r.value("kind", "ao")) << "</td><td class=\"params\">";
         if (r.contains("params") && r["params"].is_object() && !r["params"].empty()) {
             for (auto it = r["params"].begin(); it != r["params"].end(); ++it)
-                s << "<code>" << escapeHtml(it.key()) << "=" << escapeHtml(it->is_string() ? it->get<std::string>() : it->dump())
-                  << "</code> ";
+                s << "<code>" << escapeHtml(it.key()) << "="
+                  << escapeHtml(it->is_string() ? it->get<std::string>() : it->dump()) << "</code> ";
         } else {
             s << "defaults";
         }
@@ -172,9 +192,11 @@ std::string recordsSection(const SiteCase& c) {
           << formatNumber(t) << "</td><td class=\"passes\">";
         if (r.contains("passes") && r["passes"].is_object())
             for (auto it = r["passes"].begin(); it != r["passes"].end(); ++it)
-                s << escapeHtml(it.key()) << " " << (it->is_number() ? formatNumber(it->get<double>(), 3) : "?") << "<br>";
+                s << escapeHtml(it.key()) << " "
+                  << (it->is_number() ? formatNumber(it->get<double>(), 3) : "?") << "<br>";
         s << "</td>";
-        for (const char* key : {"rmse", "roi_rmse", "nonroi_rmse", "mae", "bias", "max_abs", "psnr", "ssim"}) {
+        for (const char* key :
+             {"rmse", "roi_rmse", "nonroi_rmse", "mae", "bias", "max_abs", "psnr", "ssim"}) {
             const double v = jsonNumber(r, key);
             s << "<td class=\"num\" data-value=\"" << (std::isfinite(v) ? formatNumber(v, 9) : "") << "\">"
               << formatNumber(v) << "</td>";
@@ -198,7 +220,8 @@ std::string errorMapsSection(const SiteCase& c) {
     bool any = false;
     for (const auto& im : c.images) any = any || im.group == "Error";
     if (!any) return "";
-    s << "<section>\n<h2>Error maps</h2>\n<p class=\"small\">Signed error against the reference, saturating at "
+    s << "<section>\n<h2>Error maps</h2>\n<p class=\"small\">Signed error against the reference, saturating "
+         "at "
          "&plusmn;scale (below each map). Click a map to compare its image with the reference.</p>\n"
       << "<div class=\"tiles\">\n";
     for (const auto& im : c.images) {
@@ -208,7 +231,8 @@ std::string errorMapsSection(const SiteCase& c) {
             if (o.errorId == im.id) owner = o.id;
         s << "<figure class=\"tile\"><a href=\"#b=" << escapeHtml(owner) << "\"><img class=\"px\" src=\""
           << encodeUrlPath(im.src) << "\" alt=\"" << escapeHtml(im.label) << "\"></a><figcaption>"
-          << escapeHtml(im.label) << "<br>scale &plusmn;" << formatNumber(im.errorScale) << "</figcaption></figure>\n";
+          << escapeHtml(im.label) << "<br>scale &plusmn;" << formatNumber(im.errorScale)
+          << "</figcaption></figure>\n";
     }
     s << "</div>\n</section>\n";
     return s.str();
@@ -234,7 +258,8 @@ std::string metadataSection(const SiteCase& c, const std::string& generated) {
     row("scene", scene);
     row("scene credit", sceneCredit(scene));
     row("results directory", c.input.dir);
-    row("resolution", std::to_string(d.value("width", 0)) + " x " + std::to_string(d.value("height", 0)) + " px");
+    row("resolution",
+        std::to_string(d.value("width", 0)) + " x " + std::to_string(d.value("height", 0)) + " px");
     if (d.contains("camera") && d["camera"].is_object()) {
         const auto& cam = d["camera"];
         row("camera", "eye " + vec3(cam.value("eye", nlohmann::json())) + ", target " +
@@ -242,8 +267,17 @@ std::string metadataSection(const SiteCase& c, const std::string& generated) {
                           formatNumber(jsonNumber(cam, "fov_deg"), 4) + " deg");
     }
     row("AO radius R", num("radius"));
-    std::set<std::string> shown = {"scene", "width", "height", "camera", "radius", "records", "reference",
-                                   "gl_renderer", "cores", "roi_pixels", "offscreen_occluders"};
+    std::set<std::string> shown = {"scene",
+                                   "width",
+                                   "height",
+                                   "camera",
+                                   "radius",
+                                   "records",
+                                   "reference",
+                                   "gl_renderer",
+                                   "cores",
+                                   "roi_pixels",
+                                   "offscreen_occluders"};
     if (d.contains("reference") && d["reference"].is_object()) {
         std::string ref;
         for (auto it = d["reference"].begin(); it != d["reference"].end(); ++it)
@@ -252,15 +286,18 @@ std::string metadataSection(const SiteCase& c, const std::string& generated) {
         row("reference (ray traced)", ref);
     }
     if (d.contains("roi_pixels") && !d["roi_pixels"].is_null())
-        row("ROI (off-screen occluders)", d["roi_pixels"].dump() + " pixels where removing the off-screen occluders "
-                                          "changes the reference AO by more than 3 standard errors");
+        row("ROI (off-screen occluders)", d["roi_pixels"].dump() +
+                                              " pixels where removing the off-screen occluders "
+                                              "changes the reference AO by more than 3 standard errors");
     else
         row("ROI (off-screen occluders)", "none: the scene has no off-screen occluders");
     row("GL renderer", d.value("gl_renderer", std::string("?")));
     row("CPU cores", d.contains("cores") ? d["cores"].dump() : "?");
     for (auto it = d.begin(); it != d.end(); ++it)  // whatever else the comparison recorded
-        if (!shown.count(it.key())) row(it.key(), it->is_number_float() ? formatNumber(it->get<double>(), 6) : it->dump());
-    row("measured", c.input.measuredDate.empty() ? "unknown" : c.input.measuredDate + " (results.json written)");
+        if (!shown.count(it.key()))
+            row(it.key(), it->is_number_float() ? formatNumber(it->get<double>(), 6) : it->dump());
+    row("measured",
+        c.input.measuredDate.empty() ? "unknown" : c.input.measuredDate + " (results.json written)");
     row("page generated", generated);
     s << "</table>\n<h3>Downloads</h3>\n<ul class=\"downloads\">\n";
     for (const auto& [label, path] : c.downloads)
@@ -269,7 +306,8 @@ std::string metadataSection(const SiteCase& c, const std::string& generated) {
         if (!im.exr.empty() && im.record < 0)
             s << "<li><a href=\"" << encodeUrlPath(im.exr) << "\" download>" << escapeHtml(im.label)
               << " (EXR)</a></li>\n";
-    if (!c.roiMask.empty()) s << "<li><a href=\"" << encodeUrlPath(c.roiMask) << "\">ROI mask (PNG, 0/1)</a></li>\n";
+    if (!c.roiMask.empty())
+        s << "<li><a href=\"" << encodeUrlPath(c.roiMask) << "\">ROI mask (PNG, 0/1)</a></li>\n";
     if (!c.validMask.empty())
         s << "<li><a href=\"" << encodeUrlPath(c.validMask) << "\">valid-pixel mask (PNG, 0/1)</a></li>\n";
     s << "</ul>\n</section>\n";
@@ -283,27 +321,36 @@ std::string scenePage(const SiteCase& c, const std::vector<SiteCase>& all, const
     const SiteImage* a = nullptr;
     const SiteImage* b = nullptr;
     for (const auto& im : c.images)
-        if (im.record >= 0 && im.group != "Error") { b = &im; break; }
+        if (im.record >= 0 && im.group != "Error") {
+            b = &im;
+            break;
+        }
     const std::string refId = b && b->group == "Indirect" ? "reference_gi" : "reference_ao";
     a = c.image(refId);
     if (!a)
         for (const auto& im : c.images)
-            if (im.record < 0) { a = &im; break; }
+            if (im.record < 0) {
+                a = &im;
+                break;
+            }
     if (!a) a = b;
     if (!b) b = a;
 
     std::ostringstream s;
-    s << pageHead(c.input.title + " - vct gallery") << "<body class=\"scene-page\">\n<header><nav><a href=\"index.html\">"
+    s << pageHead(c.input.title + " - vct gallery")
+      << "<body class=\"scene-page\">\n<header><nav><a href=\"index.html\">"
       << "&larr; all cases</a>";
     for (const auto& other : all)
         if (other.page != c.page)
-            s << " &middot; <a href=\"" << encodeUrlPath(other.page) << "\">" << escapeHtml(other.input.title) << "</a>";
+            s << " &middot; <a href=\"" << encodeUrlPath(other.page) << "\">" << escapeHtml(other.input.title)
+              << "</a>";
     const auto& d = c.input.results;
     s << "</nav>\n<h1>" << escapeHtml(c.input.title) << "</h1>\n<p class=\"summary\"><code>"
-      << escapeHtml(d.value("scene", std::string("?"))) << "</code> &middot; " << d.value("width", 0) << "&times;"
-      << d.value("height", 0) << " px &middot; R = " << formatNumber(jsonNumber(d, "radius")) << " &middot; "
-      << escapeHtml(d.value("gl_renderer", std::string("?"))) << " &middot; measured "
-      << escapeHtml(c.input.measuredDate.empty() ? "?" : c.input.measuredDate) << " &middot; <a href=\"#metadata\">"
+      << escapeHtml(d.value("scene", std::string("?"))) << "</code> &middot; " << d.value("width", 0)
+      << "&times;" << d.value("height", 0) << " px &middot; R = " << formatNumber(jsonNumber(d, "radius"))
+      << " &middot; " << escapeHtml(d.value("gl_renderer", std::string("?"))) << " &middot; measured "
+      << escapeHtml(c.input.measuredDate.empty() ? "?" : c.input.measuredDate)
+      << " &middot; <a href=\"#metadata\">"
       << "all metadata</a></p>\n</header>\n";
     s << viewerSection(c, a, b) << plotsSection(c) << recordsSection(c) << errorMapsSection(c)
       << metadataSection(c, generated) << pageFooter({&c}, generated) << "</body>\n</html>\n";

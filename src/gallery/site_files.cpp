@@ -26,7 +26,8 @@ bool plainFileName(const std::string& name) {
 void copyInto(const fs::path& from, const fs::path& to) {
     std::error_code ec;
     fs::copy_file(from, to, fs::copy_options::overwrite_existing, ec);
-    if (ec) throw std::runtime_error("cannot copy " + from.string() + " to " + to.string() + ": " + ec.message());
+    if (ec)
+        throw std::runtime_error("cannot copy " + from.string() + " to " + to.string() + ": " + ec.message());
 }
 
 struct CaseWriter {
@@ -89,10 +90,16 @@ struct CaseWriter {
     void addReferences() {
         const nlohmann::json& ref = in.results.value("reference", nlohmann::json::object());
         const std::string spp = ref.contains("spp") ? " (" + ref["spp"].dump() + " spp)" : "";
-        struct RefKind { const char* stem; const char* label; const char* group; DisplayEncoding enc; };
-        const RefKind kinds[] = {{"reference_ao", "reference AO", "AO", DisplayEncoding::AoAsStored},
-                                 {"reference_gi", "reference indirect", "Indirect", DisplayEncoding::Radiance},
-                                 {"reference_beauty", "reference beauty", "Beauty", DisplayEncoding::Radiance}};
+        struct RefKind {
+            const char* stem;
+            const char* label;
+            const char* group;
+            DisplayEncoding enc;
+        };
+        const RefKind kinds[] = {
+            {"reference_ao", "reference AO", "AO", DisplayEncoding::AoAsStored},
+            {"reference_gi", "reference indirect", "Indirect", DisplayEncoding::Radiance},
+            {"reference_beauty", "reference beauty", "Beauty", DisplayEncoding::Radiance}};
         for (const RefKind& k : kinds) {
             SiteImage im;
             im.id = k.stem;
@@ -123,7 +130,8 @@ struct CaseWriter {
             const std::string exr = imgs.value("exr", ""), png = imgs.value("png", "");
             im.id = fs::path(!exr.empty() ? exr : png).stem().string();
             if (im.id.empty() || out.image(im.id)) continue;
-            if (!addView(im, exr, png, isAo ? DisplayEncoding::AoAsStored : DisplayEncoding::Radiance)) continue;
+            if (!addView(im, exr, png, isAo ? DisplayEncoding::AoAsStored : DisplayEncoding::Radiance))
+                continue;
             out.recordImage[r] = int(out.images.size());
             out.images.push_back(im);
             addError(out.images.back(), imgs.value("error_png", ""), jsonNumber(imgs, "error_scale"));
@@ -174,7 +182,8 @@ struct CaseWriter {
 
 }  // namespace
 
-SiteCase buildSiteCase(const GalleryInput& input, const std::string& siteDir, int thumbnailWidth, int& imageCount) {
+SiteCase buildSiteCase(const GalleryInput& input, const std::string& siteDir, int thumbnailWidth,
+                       int& imageCount) {
     CaseWriter w{input, fs::path(siteDir), "data/" + input.id, thumbnailWidth, imageCount, {}};
     w.out.input = input;
     w.out.page = input.id + ".html";

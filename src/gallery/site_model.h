@@ -11,21 +11,21 @@
 namespace vct {
 
 struct SiteImage {
-    std::string id;          // unique in the case: "reference_ao", "ao_gtao", "ao_gtao_error"
-    std::string label;       // for people: "gtao", "reference AO (64 spp)", "gtao: error"
-    std::string group;       // "AO", "Indirect", "Beauty" or "Error"
-    std::string src;         // display PNG
-    std::string thumb;       // thumbnail PNG (may equal src)
-    std::string exr;         // linear EXR for download ("" if none)
-    std::string errorId;     // method images: id of their error map ("" if none)
-    double errorScale = 0;   // error maps: the +-scale at which the colours saturate
-    int record = -1;         // index into results["records"], -1 for references
+    std::string id;         // unique in the case: "reference_ao", "ao_gtao", "ao_gtao_error"
+    std::string label;      // for people: "gtao", "reference AO (64 spp)", "gtao: error"
+    std::string group;      // "AO", "Indirect", "Beauty" or "Error"
+    std::string src;        // display PNG
+    std::string thumb;      // thumbnail PNG (may equal src)
+    std::string exr;        // linear EXR for download ("" if none)
+    std::string errorId;    // method images: id of their error map ("" if none)
+    double errorScale = 0;  // error maps: the +-scale at which the colours saturate
+    int record = -1;        // index into results["records"], -1 for references
 };
 
 struct SiteCase {
     GalleryInput input;
-    std::string page;                 // "<id>.html"
-    std::string dataDir;              // "data/<id>"
+    std::string page;     // "<id>.html"
+    std::string dataDir;  // "data/<id>"
     std::vector<SiteImage> images;
     std::vector<int> recordImage;     // per record: index into images of its main view, or -1
     std::string roiMask, roiOutline;  // "" when the scene has no off-screen occluders
@@ -41,7 +41,8 @@ struct SiteCase {
 
 // Copies and converts one comparison's files into SITE/data/<id>/ and returns its model.
 // `imageCount` is increased by the PNGs written.
-SiteCase buildSiteCase(const GalleryInput& input, const std::string& siteDir, int thumbnailWidth, int& imageCount);
+SiteCase buildSiteCase(const GalleryInput& input, const std::string& siteDir, int thumbnailWidth,
+                       int& imageCount);
 
 // Shared page parts (page_common.cpp).
 std::string pageHead(const std::string& title);
@@ -49,7 +50,8 @@ std::string pageFooter(const std::vector<const SiteCase*>& cases, const std::str
 std::string recordLabel(const nlohmann::json& record, bool withKind);
 double jsonNumber(const nlohmann::json& j, const char* key);  // NaN when missing or null
 
-std::string indexPage(const std::vector<SiteCase>& cases, const std::string& title, const std::string& generated);
+std::string indexPage(const std::vector<SiteCase>& cases, const std::string& title,
+                      const std::string& generated);
 std::string scenePage(const SiteCase& c, const std::vector<SiteCase>& all, const std::string& generated);
 
 }  // namespace vct

@@ -4,6 +4,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <map>
 #include <stdexcept>
 
 namespace vct {
@@ -19,7 +20,18 @@ void bindGBufferTextures(const GBuffer& g) {
 
 GBuffer renderGBuffer(const GpuScene& scene, const View& view, PassTimer& timer) {
     auto scope = timer.scope("gbuffer");
-    static GlProgram program = buildGraphicsProgram("raster/gbuffer_vert.glsl", "raster/gbuffer_frag.glsl");
+    // One program per shader variant: features the scene does not use are compiled out.
+    static std::map<std::string, GlProgram> programs;
+    ShaderDefines defines;
+    if (!scene.hasTextures) defines.push_back({"SCENE_NO_TEXTURES", "1"});
+    if (!scene.hasAlphaMask) defines.push_back({"SCENE_NO_ALPHA_MASK", "1"});
+    std::string key;
+    for (const auto& d : defines) key += d.first + ";";
+    auto it = programs.find(key);
+    if (it == programs.end())
+        it = programs.emplace(key, buildGraphicsProgram("raster/gbuffer_vert.glsl", "raster/gbuffer_frag.glsl", defines))
+                 .first;
+    const GlProgram& program = it->second;
 
     GBuffer g;
     g.width = view.width;

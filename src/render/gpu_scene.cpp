@@ -28,15 +28,56 @@ std::vector<uint8_t> resampleToLayer(const Texture& t) {
     return out;
 }
 
+std::string str3(const glm::vec3& v) {
+    return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + ")";
+}
+
+bool finite3(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// The loader rejects non-finite files; a Scene built in code reaches the GPU without it, and
+// one NaN vertex poisons voxel averages and Embree's BVH. Refuse it here, naming the element.
+void validateScene(const Scene& scene) {
+    const std::string where = "scene" + (scene.path.empty() ? std::string() : " '" + scene.path + "'");
+    for (size_t i = 0; i < scene.positions.size(); ++i)
+        if (!finite3(scene.positions[i]))
+            throw std::invalid_argument(where + ": vertex " + std::to_string(i) + " position is not finite " +
+                                        str3(scene.positions[i]));
+    for (size_t i = 0; i < scene.normals.size(); ++i)
+        if (!finite3(scene.normals[i]))
+            throw std::invalid_argument(where + ": vertex " + std::to_string(i) + " normal is not finite " +
+                                        str3(scene.normals[i]));
+    for (size_t t = 0; t < scene.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k)
+            if (scene.triangles[t][k] >= scene.positions.size())
+                throw std::invalid_argument(where + ": triangle " + std::to_string(t) + " index " +
+                                            std::to_string(scene.triangles[t][k]) + " out of range [0, " +
+                                            std::to_string(scene.positions.size()) + ")");
+    for (size_t m = 0; m < scene.materials.size(); ++m) {
+        const Material& mat = scene.materials[m];
+        if (!finite3(glm::vec3(mat.baseColorFactor)) || !finite3(mat.emissiveFactor))
+            throw std::invalid_argument(where + ": material " + std::to_string(m) + " '" + mat.name +
+                                        "': base colour or emission is not finite");
+    }
+    for (size_t l = 0; l < scene.lights.size(); ++l) {
+        const Light& light = scene.lights[l];
+        if (!finite3(light.color) || !finite3(light.position) || !finite3(light.direction))
+            throw std::invalid_argument(where + ": light " + std::to_string(l) + " '" + light.name +
+                                        "': colour, position or direction is not finite");
+    }
+}
+
 }  // namespace
 
 GpuScene uploadScene(const Scene& scene) {
+    validateScene(scene);
     GpuScene g;
     g.vertexCount = static_cast<int>(scene.positions.size());
     g.triangleCount = static_cast<int>(scene.triangles.size());
     g.materialCount = static_cast<int>(scene.materials.size());
     g.lightCount = static_cast<int>(scene.lights.size());
     g.bounds = scene.bounds;
+    g.hasTextures = !scene.textures.empty();
+    for (const Material& m : scene.materials) g.hasAlphaMask |= m.alphaMask;
 
     std::vector<gpu::GpuVertex> vertices(scene.positions.size());
     for (size_t i = 0; i < vertices.size(); ++i) {

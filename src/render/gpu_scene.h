@@ -20,6 +20,8 @@ struct GpuScene {
     int triangleCount = 0;
     int materialCount = 0;
     int lightCount = 0;
+    bool hasTextures = false;   // any texture referenced: else shaders compile without sampling
+    bool hasAlphaMask = false;  // any alpha-masked material: else no alpha test
     Bounds3 bounds;
 };
 

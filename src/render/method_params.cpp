@@ -6,6 +6,8 @@
 #include "ao/hbao.h"
 #include "ao/horizon_ao.h"
 #include "ao/ssao.h"
+#include "cone/cone_settings.h"
+#include "reference/reference_ao.h"
 #include "render/params.h"
 #include "render/plan.h"
 
@@ -24,6 +26,13 @@ void documentAllMethodParams() {
     readHbaoSettings(empty);
     readGtaoSettings(empty);
     readAoBlurSettings(empty, true);
+    readConeSettings(empty);
+    referenceSettingsFromParams(empty);
+    empty.getChoice("reference.pixel", "center", {"center", "area"},
+                    "reference: AO at the G-buffer's pixel centres, or averaged over the pixel with jittered "
+                    "primary rays (box filter, as Cycles)");
+    empty.getInt("vct.bounces", 0, 0, 8, "extra diffuse bounces traced between voxels");
+    empty.getInt("vct.view.level", 0, 0, 16, "mip level shown by voxel_* AOVs");
 }
 
 }  // namespace vct

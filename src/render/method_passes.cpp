@@ -1,6 +1,7 @@
 #include "render/method_passes.h"
 
 #include "ao/screen_space_ao.h"
+#include "clipmap/clipmap.h"
 #include "cone/cone_trace.h"
 #include "voxelize/voxelize.h"
 #include "gl/context.h"
@@ -8,6 +9,7 @@
 #include "reference/embree_scene.h"
 #include "reference/reference_ao.h"
 #include "reference/reference_gi.h"
+#include "render/voxel_region.h"
 
 #include <stdexcept>
 
@@ -17,6 +19,7 @@ struct MethodCache::Impl {
     std::unique_ptr<EmbreeScene> embree;  // built on first use by a reference pass
     // Voxel grids keyed by everything that shapes them (resolution, injection, bounces, ...).
     std::map<std::string, std::shared_ptr<VoxelGrid>> grids;
+    std::map<std::string, std::shared_ptr<Clipmap>> clipmaps;  // vct.clipmap.levels > 0, same keys
 };
 
 namespace {
@@ -111,33 +114,91 @@ std::string gridKey(const RenderRequest& r, bool inject, bool aniso) {
     return k;
 }
 
-// Voxelize, inject and filter as the plan says, or reuse the session's grid.
-std::shared_ptr<VoxelGrid> voxelGridFor(const RenderPlan& plan, const RenderRequest& r, const Scene& scene,
-                                        const GpuScene& gpu, bool aniso, PassTimer& timer, MethodCache& cache,
-                                        std::map<std::string, int>& runCounts) {
+// The voxels of one render: a dense grid, or a clipmap (vct.clipmap.levels > 0).
+struct VoxelVolume {
+    std::shared_ptr<VoxelGrid> grid;     // dense path; the clipmap's coarsest level otherwise
+    std::shared_ptr<Clipmap> clipmap;    // null on the dense path
+    nlohmann::json stats;                // extra["voxels"]
+};
+
+std::string boundsKey(const Bounds3& b) {
+    std::string k;
+    for (int a = 0; a < 3; ++a) k += std::to_string(b.min[a]) + "," + std::to_string(b.max[a]) + ",";
+    return k;
+}
+
+// Voxelize, inject and filter as the plan says, or reuse the session's grid. The region
+// (render/voxel_region.h) and the clipmap levels are part of the cache key.
+VoxelVolume voxelGridFor(const RenderPlan& plan, const RenderRequest& r, const Scene& scene, const GpuScene& gpu,
+                         const GBuffer* gbuffer, const ConeSettings& cone, PassTimer& timer, MethodCache& cache,
+                         std::map<std::string, int>& runCounts) {
     if (r.backend != "gl")
         throw std::invalid_argument("--backend " + r.backend + " is not implemented yet (use --backend gl)");
     const bool inject = plan.runs("inject");
-    const std::string key = gridKey(r, inject, aniso);
-    auto& grids = cacheOf(cache).grids;
+    const int levels = clipmapLevelCount(r);
+    const VoxelRegion region = chooseVoxelRegion(r, scene, gbuffer, cone.offsetVoxels);
+    // Clipmaps keep isotropic mips only (clipmap/clipmap.h).
+    const bool aniso = levels == 0 && cone.anisotropic;
+    std::string key = gridKey(r, inject, aniso) + ";region=" + boundsKey(region.bounds);
+    if (levels > 0) {
+        const glm::vec3 e = r.camera.eye;
+        key += ";clipmap=" + std::to_string(levels) + "@" + std::to_string(e.x) + "," + std::to_string(e.y) + "," +
+               std::to_string(e.z);
+    }
+    VoxelVolume v;
+    auto& impl = cacheOf(cache);
     if (r.reuseVoxels) {
-        auto it = grids.find(key);
-        if (it != grids.end()) return it->second;
+        if (levels > 0) {
+            auto it = impl.clipmaps.find(key);
+            if (it != impl.clipmaps.end()) v.clipmap = it->second;
+        } else {
+            auto it = impl.grids.find(key);
+            if (it != impl.grids.end()) v.grid = it->second;
+        }
     }
     GlContext& gl = GlContext::shared();
-    auto grid = std::make_shared<VoxelGrid>(voxelizeScene(gpu, scene.bounds, r.voxelRes, r.params, timer));
-    gl.checkErrors("voxelize");
-    runCounts["voxelize"]++;
-    if (inject) {
-        injectRadiance(*grid, gpu, scene, r.sky, r.params, timer);
-        gl.checkErrors("inject");
-        runCounts["inject"]++;
+    if (levels > 0 && !v.clipmap) {
+        const ClipmapLayout layout = computeClipmapLayout(region.bounds, r.camera.eye, levels, r.voxelRes);
+        v.clipmap = std::make_shared<Clipmap>(buildClipmap(gpu, scene, layout, inject, r.sky, r.params, timer));
+        gl.checkErrors("clipmap");
+        runCounts["voxelize"]++;
+        if (inject) runCounts["inject"]++;
+        runCounts["mips"]++;
+        if (r.reuseVoxels) impl.clipmaps[key] = v.clipmap;
+    } else if (levels == 0 && !v.grid) {
+        v.grid = std::make_shared<VoxelGrid>(voxelizeScene(gpu, region.bounds, r.voxelRes, r.params, timer));
+        gl.checkErrors("voxelize");
+        runCounts["voxelize"]++;
+        if (inject) {
+            injectRadiance(*v.grid, gpu, scene, r.sky, r.params, timer);
+            gl.checkErrors("inject");
+            runCounts["inject"]++;
+        }
+        buildMips(*v.grid, aniso, timer);
+        gl.checkErrors("mips");
+        runCounts["mips"]++;
+        if (r.reuseVoxels) impl.grids[key] = v.grid;
     }
-    buildMips(*grid, aniso, timer);
-    gl.checkErrors("mips");
-    runCounts["mips"]++;
-    if (r.reuseVoxels) grids[key] = grid;
-    return grid;
+    if (v.clipmap) {
+        // The coarsest level covers the region: it serves the voxel_* views. Aliasing
+        // shared_ptr: the level lives as long as the clipmap.
+        v.grid = std::shared_ptr<VoxelGrid>(v.clipmap, &v.clipmap->levels.back());
+        v.stats = clipmapStats(*v.clipmap);
+    } else {
+        const VoxelGrid& g = *v.grid;
+        const glm::vec3 hi = g.origin + glm::vec3(g.resolution) * g.voxelSize;
+        v.stats = {{"resolution", {g.resolution.x, g.resolution.y, g.resolution.z}},
+                   {"voxel_size", g.voxelSize},
+                   {"grid_min", {g.origin.x, g.origin.y, g.origin.z}},
+                   {"grid_max", {hi.x, hi.y, hi.z}},
+                   {"occupied", g.occupiedVoxels},
+                   {"memory_bytes", g.memoryBytes},
+                   {"mips", g.anisotropic ? "anisotropic" : "isotropic"},
+                   {"dense_voxels", size_t(g.resolution.x) * g.resolution.y * g.resolution.z}};
+    }
+    v.stats["region"] = region.toJson();
+    v.stats["clipmap_levels"] = levels;
+    return v;
 }
 
 }  // namespace
@@ -155,19 +216,17 @@ MethodOutputs runMethodPasses(const RenderPlan& plan, const RenderRequest& reque
     if (plan.runs("reference_gi")) runReferenceGi(request, scene, view, timer, cache, out, extra);
     if (plan.runs("voxelize")) {
         const ConeSettings cone = readConeSettings(request.params);
-        std::shared_ptr<VoxelGrid> grid =
-            voxelGridFor(plan, request, scene, gpu, cone.anisotropic, timer, cache, runCounts);
-        extra["voxels"] = {{"resolution", {grid->resolution.x, grid->resolution.y, grid->resolution.z}},
-                           {"voxel_size", grid->voxelSize},
-                           {"occupied", grid->occupiedVoxels},
-                           {"memory_bytes", grid->memoryBytes},
-                           {"dense_voxels", size_t(grid->resolution.x) * grid->resolution.y * grid->resolution.z}};
+        VoxelVolume volume = voxelGridFor(plan, request, scene, gpu, gbuffer, cone, timer, cache, runCounts);
+        std::shared_ptr<VoxelGrid> grid = volume.grid;
+        extra["voxels"] = volume.stats;
         if (plan.runs("cone_ao")) {
-            out.ao = coneTraceAO(*grid, *gbuffer, view, request.radius, cone, timer);
+            out.ao = volume.clipmap ? coneTraceClipmapAO(*volume.clipmap, *gbuffer, view, request.radius, cone, timer)
+                                    : coneTraceAO(*grid, *gbuffer, view, request.radius, cone, timer);
             gl.checkErrors("cone_ao");
         }
         if (plan.runs("cone_gi")) {
-            out.indirect = coneTraceGI(*grid, *gbuffer, view, request.sky, cone, timer);
+            out.indirect = volume.clipmap ? coneTraceClipmapGI(*volume.clipmap, *gbuffer, view, request.sky, cone, timer)
+                                          : coneTraceGI(*grid, *gbuffer, view, request.sky, cone, timer);
             gl.checkErrors("cone_gi");
         }
         if (plan.runs("voxel_view")) {

@@ -1,5 +1,7 @@
 #include "render/plan.h"
 
+#include "render/voxel_region.h"
+
 #include <algorithm>
 #include <map>
 #include <set>
@@ -75,7 +77,8 @@ std::vector<PassDecl> declarePasses(const SceneFeatures& s, const RenderRequest&
     }
 
     if (voxels) {
-        d.push_back({"voxelize", {}, {"voxels"}, "world-space occupancy for cone tracing"});
+        d.push_back({"voxelize", {}, {"voxels"},
+                     "world-space occupancy for cone tracing; " + voxelRegionExplanation(r)});
         if (r.gi != "vct")
             notApplicable["inject"] = "AO needs opacity only, not radiance (no --gi vct)";
         else if (!lights && !s.hasEmission)
@@ -211,6 +214,10 @@ RenderPlan planRender(const SceneFeatures& scene, const RenderRequest& request) 
         auto it = notApplicable.find(name);
         plan.skipped.push_back({name, it != notApplicable.end() ? it->second : "not applicable"});
     }
+    if (plan.runs("gbuffer")) {
+        if (!scene.hasTextures) plan.notes.push_back("gbuffer shader compiled without texture sampling (no textures)");
+        if (!scene.hasAlphaMask) plan.notes.push_back("gbuffer shader compiled without the alpha test (no MASK materials)");
+    }
     // Keep skipped passes in the canonical order for stable output.
     const auto& order = allPassNames();
     std::stable_sort(plan.skipped.begin(), plan.skipped.end(), [&](const SkippedPass& a, const SkippedPass& b) {
@@ -233,6 +240,10 @@ std::string describePlan(const RenderPlan& plan) {
     }
     out << "passes left out:\n";
     for (const auto& s : plan.skipped) out << "  " << s.name << ": " << s.reason << '\n';
+    if (!plan.notes.empty()) {
+        out << "scene-dependent choices:\n";
+        for (const auto& n : plan.notes) out << "  " << n << '\n';
+    }
     return out.str();
 }
 

@@ -40,6 +40,7 @@ struct SkippedPass {
 struct RenderPlan {
     std::vector<PassDecl> run;        // in execution order, each with the reason it runs
     std::vector<SkippedPass> skipped; // every known pass that does not run, with the reason
+    std::vector<std::string> notes;   // shader variants and other choices made from the scene
     bool runs(const std::string& pass) const;
     std::vector<std::string> runNames() const;
 };

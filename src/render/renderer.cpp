@@ -165,6 +165,7 @@ nlohmann::json statsJson(const RenderResult& result, const RenderRequest& reques
     j["passes_run"] = result.plan.runNames();
     j["passes_skipped"] = nlohmann::json::array();
     for (const auto& s : result.plan.skipped) j["passes_skipped"].push_back({{"pass", s.name}, {"reason", s.reason}});
+    j["plan_notes"] = result.plan.notes;
     for (auto it = result.extra.begin(); it != result.extra.end(); ++it) j[it.key()] = it.value();
     return j;
 }

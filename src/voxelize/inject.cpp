@@ -36,7 +36,8 @@ void dispatchGrid(const glm::ivec3& size) {
 }  // namespace
 
 void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scene, float sky,
-                    const ParamMap& params, PassTimer& timer) {
+                    const ParamMap& params, PassTimer& timer, const std::vector<const VoxelGrid*>& outerLevels,
+                    const std::string& scopeName) {
     if (!grid.opacity || !grid.albedo || !grid.normal || !grid.emission)
         throw std::invalid_argument("injectRadiance: the grid is not voxelized");
     if (!std::isfinite(sky) || sky < 0.f) throw std::invalid_argument("injectRadiance: sky radiance must be finite and >= 0");
@@ -57,7 +58,16 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
     const GLenum format = useFloat ? GL_RGBA32F : GL_RGBA16F;
     const ShaderDefines defines = {{"RADIANCE_FORMAT", glslImageFormat(format)},
                                    {"RADIANCE_FORMAT_MAX", formatMaxLiteral(format)}};
-    GlProgram inject = buildComputeProgram("voxelize/inject.glsl", defines);
+    constexpr int maxOuter = 7, outerUnit = 20;  // clear of the scene textures (unit 8)
+    if (int(outerLevels.size()) > maxOuter)
+        throw std::invalid_argument("injectRadiance: more than 7 outer clipmap levels");
+    for (const VoxelGrid* o : outerLevels)
+        if (!o || !o->opacity || o->resolution != glm::ivec3(o->resolution.x) ||
+            o->resolution.x != outerLevels.front()->resolution.x)
+            throw std::invalid_argument("injectRadiance: outer levels must be voxelized cubic grids of one size");
+    ShaderDefines injectDefines = defines;
+    if (!outerLevels.empty()) injectDefines.push_back({"OUTER_LEVELS", std::to_string(outerLevels.size())});
+    GlProgram inject = buildComputeProgram("voxelize/inject.glsl", injectDefines);
     const glm::ivec3 res = grid.resolution;
     grid.radiance = createTexture3D(format, res.x, res.y, res.z, grid.levels);
     GlProgram bounce, mips;
@@ -66,7 +76,7 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
         mips = buildIsotropicMipProgram(grid);
     }
 
-    auto scope = timer.scope("inject");
+    auto scope = timer.scope(scopeName);
 
     // Direct light and emission.
     bindSceneBuffers(gpuScene);
@@ -81,6 +91,18 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
     setUniform(p, "uVoxelSize", grid.voxelSize);
     setUniform(p, "uLightCount", gpuScene.lightCount);
     setUniform(p, "uShadowOffset", offset);
+    for (size_t k = 0; k < outerLevels.size(); ++k) {
+        const VoxelGrid& o = *outerLevels[k];
+        const std::string idx = "[" + std::to_string(k) + "]";
+        glBindTextureUnit(GLuint(outerUnit + k), o.opacity.id());
+        setUniform(p, ("uOuterOpacity" + idx).c_str(), int(outerUnit + k));
+        glProgramUniform4f(p, glGetUniformLocation(p, ("uOuterGrid" + idx).c_str()), o.origin.x, o.origin.y,
+                           o.origin.z, o.voxelSize);
+    }
+    if (!outerLevels.empty()) {
+        setUniform(p, "uOuterResolution", outerLevels.front()->resolution.x);
+        setUniform(p, "uOuterCount", int(outerLevels.size()));
+    }
     glUseProgram(p);
     dispatchGrid(res);
 
@@ -109,6 +131,7 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
         }
     }
     for (GLuint u = 0; u < 4; ++u) glBindTextureUnit(u, 0);
+    for (size_t k = 0; k < outerLevels.size(); ++k) glBindTextureUnit(GLuint(outerUnit + k), 0);
     glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
     glUseProgram(0);
     grid.memoryBytes = voxelGridMemoryBytes(grid);

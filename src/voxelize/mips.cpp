@@ -106,12 +106,12 @@ void buildAnisotropicMips(VoxelGrid& grid, const AnisoPrograms& programs) {
 
 }  // namespace
 
-void buildMips(VoxelGrid& grid, bool anisotropic, PassTimer& timer) {
+void buildMips(VoxelGrid& grid, bool anisotropic, PassTimer& timer, const std::string& scopeName) {
     if (!grid.opacity) throw std::invalid_argument("buildMips: the grid has no opacity (voxelize first)");
     GlProgram iso = buildIsotropicMipProgram(grid);
     AnisoPrograms aniso;
     if (anisotropic) aniso = buildAnisoPrograms(grid);
-    auto scope = timer.scope("mips");
+    auto scope = timer.scope(scopeName);
     buildIsotropicMips(grid, iso);
     if (anisotropic) buildAnisotropicMips(grid, aniso);
     else {

@@ -21,7 +21,20 @@ VoxelGrid makeGridLayout(const Bounds3& bounds, int maxResolution) {
         g.resolution[a] = std::clamp(int(std::ceil(e[a] / g.voxelSize)) + 2, 1, maxResolution);
     g.resolution = glm::max(g.resolution, glm::ivec3(1));
     glm::vec3 span = glm::vec3(g.resolution) * g.voxelSize;
-    g.origin = bounds.center() - 0.5f * span;
+    return makeGridLayout(bounds.center() - 0.5f * span, g.voxelSize, g.resolution);
+}
+
+VoxelGrid makeGridLayout(const glm::vec3& origin, float voxelSize, const glm::ivec3& resolution) {
+    if (!(voxelSize > 0.f) || !std::isfinite(voxelSize))
+        throw std::invalid_argument("voxel grid: voxel size " + std::to_string(voxelSize) + " must be finite and > 0");
+    if (glm::any(glm::lessThan(resolution, glm::ivec3(1))) || glm::any(glm::greaterThan(resolution, glm::ivec3(1024))))
+        throw std::invalid_argument("voxel grid: resolution outside [1, 1024]");
+    for (int a = 0; a < 3; ++a)
+        if (!std::isfinite(origin[a])) throw std::invalid_argument("voxel grid: origin is not finite");
+    VoxelGrid g;
+    g.resolution = resolution;
+    g.voxelSize = voxelSize;
+    g.origin = origin;
     g.voxelFromWorld = glm::scale(glm::mat4(1.f), glm::vec3(1.f / g.voxelSize)) *
                        glm::translate(glm::mat4(1.f), -g.origin);
     g.worldFromVoxel = glm::inverse(g.voxelFromWorld);

@@ -51,4 +51,8 @@ struct VoxelGrid {
 // on the boundary stay inside): `maxResolution` voxels along the longest axis.
 VoxelGrid makeGridLayout(const Bounds3& bounds, int maxResolution);
 
+// An exact layout: min corner `origin`, cubic voxels of edge `voxelSize`, `resolution` voxels
+// per axis (clipmap levels, whose origins and voxel sizes must nest exactly).
+VoxelGrid makeGridLayout(const glm::vec3& origin, float voxelSize, const glm::ivec3& resolution);
+
 }  // namespace vct

@@ -41,7 +41,12 @@ VoxelGrid voxelizeScene(const GpuScene& scene, const Bounds3& region, int voxelR
     for (int a = 0; a < 3; ++a)
         if (!std::isfinite(region.min[a]) || !std::isfinite(region.max[a]))
             throw std::invalid_argument("voxelize: region bounds are not finite");
-    VoxelGrid grid = makeGridLayout(region, voxelRes);
+    return voxelizeGrid(scene, makeGridLayout(region, voxelRes), params, timer);
+}
+
+VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& params, PassTimer& timer,
+                       const std::string& scopeName) {
+    VoxelGrid grid = makeGridLayout(layout.origin, layout.voxelSize, layout.resolution);
     const std::string precision =
         params.getChoice("vct.voxel.precision", "auto", {"auto", "half", "float"},
                          "storage of emission/radiance: half (RGBA16F, clamps at 65504), float (RGBA32F), "
@@ -62,7 +67,7 @@ VoxelGrid voxelizeScene(const GpuScene& scene, const Bounds3& region, int voxelR
     GlProgram bigPass = buildComputeProgram("voxelize/voxelize.glsl", bigDefines);
     GlProgram resolve = buildComputeProgram("voxelize/resolve.glsl", resolveDefines);
 
-    auto scope = timer.scope("voxelize");
+    auto scope = timer.scope(scopeName);
     const glm::ivec3 res = grid.resolution;
 
     // Accumulators, zeroed.

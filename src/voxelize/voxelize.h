@@ -21,6 +21,9 @@
 #include "render/timing.h"
 #include "voxelize/voxel_grid.h"
 
+#include <string>
+#include <vector>
+
 namespace vct {
 
 // Conservative voxelization of every triangle overlapping `region` (Akenine-Moller SAT per
@@ -31,18 +34,29 @@ namespace vct {
 VoxelGrid voxelizeScene(const GpuScene& scene, const Bounds3& region, int voxelRes,
                         const ParamMap& params, PassTimer& timer);
 
+// The same into a given layout (makeGridLayout; textures of `layout` are ignored): clipmap
+// levels whose origins and voxel sizes must nest exactly. Timer scope `scopeName`.
+VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& params, PassTimer& timer,
+                       const std::string& scopeName = "voxelize");
+
 // Writes grid.radiance level 0: premultiplied (L * opacity, opacity), where L = emission +
 // albedo / pi * sum of the punctual lights' irradiance on the voxel's average normal, each
 // with visibility from a ray marched through the opacity grid (glTF KHR_lights_punctual
 // units). With vct.bounces = N, adds N diffuse bounces (6 cones of 60 degrees per voxel;
 // escaped cones see radiance `sky`). Call buildMips afterwards. Timer scope "inject".
+//
+// `outerLevels` (clipmaps, src/clipmap): voxelized coarser grids that contain this one,
+// innermost first (at most 7, cubic, of this grid's resolution); shadow rays leaving this
+// grid continue through them. `scopeName` replaces the timer scope's name.
 void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scene, float sky,
-                    const ParamMap& params, PassTimer& timer);
+                    const ParamMap& params, PassTimer& timer,
+                    const std::vector<const VoxelGrid*>& outerLevels = {},
+                    const std::string& scopeName = "inject");
 
 // Isotropic mips of opacity and (if injected) radiance: the mean of the 2x2x2 children (3
 // along an axis whose size is odd, at its last voxel, so no geometry is dropped). With
 // `anisotropic`, also the six directional textures of the contract. Timer scope "mips".
-void buildMips(VoxelGrid& grid, bool anisotropic, PassTimer& timer);
+void buildMips(VoxelGrid& grid, bool anisotropic, PassTimer& timer, const std::string& scopeName = "mips");
 
 // GPU bytes of every texture held by the grid (queried from GL).
 size_t voxelGridMemoryBytes(const VoxelGrid& grid);

@@ -102,7 +102,9 @@ TEST(SweepCli, ResumedAndShardedSweepsEqualOneRun) {
         const bool done = before.count(id) != 0;
         EXPECT_EQ(r.output.find(id + ": skipped, done already") != std::string::npos, done) << id << "\n" << r.output;
         EXPECT_EQ(r.output.find(id + ": ran 3 variants") != std::string::npos, !done) << id << "\n" << r.output;
-        if (done) EXPECT_EQ(fs::last_write_time(resumed + "/cases/" + id + "/results.json"), before[id]) << id;
+        if (done) {
+            EXPECT_EQ(fs::last_write_time(resumed + "/cases/" + id + "/results.json"), before[id]) << id;
+        }
     }
     const json resumedMerged = mergeOf({resumed}, tmp + "/merged_resumed");
     EXPECT_EQ(withoutTiming(resumedMerged["records"]), withoutTiming(fullMerged["records"]));

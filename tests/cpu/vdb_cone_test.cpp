@@ -37,65 +37,64 @@ TEST(VdbCone, OpenFloorIsUnoccluded) {
     for (float a : ao) EXPECT_NEAR(a, 1.f, 1e-5);
 }
 
-TEST(VdbCone, LowCeilingClosesTheHemisphere) {
-    Scene s;
-    uint32_t m = vcttest::addMaterial(s, glm::vec3(0.5f));
-    vcttest::addQuad(s, {-5, 0, -5}, {0, 0, 10}, {10, 0, 0}, m);
-    vcttest::addQuad(s, {-5, 0.5f, -5}, {10, 0, 0}, {0, 0, 10}, m);  // ceiling facing down
-    vcttest::finish(s);
-    ParamMap params;
-    SparseVoxelScene v = buildSparseVoxels(s, 64, false, 1.f, params);
-    auto pts = floorPoints({{0, 0, 0}, {1.3f, 0, 0.7f}});
-    std::vector<float> ao = sparseConeAO(v, pts, 3.f, defaults());
-    for (float a : ao) EXPECT_LT(a, 0.1f);
-    // A radius shorter than the ceiling's height sees nothing of it.
-    std::vector<float> shortR = sparseConeAO(v, pts, 0.15f, defaults());
-    for (float a : shortR) EXPECT_NEAR(a, 1.f, 1e-5);
+// A ceiling over the floor occludes, more the lower it is (the exact A_R for an infinite ceiling
+// at height h is (h / R)^2; VCT, whose footprints blur a one-voxel ceiling into partly
+// transparent coarse texels, leaks above it, so only the ordering and bounds are checked here;
+// the agreement with the GPU path is tests/gpu/vdb_vs_gl_test.cpp's job).
+TEST(VdbCone, LowerCeilingOccludesMore) {
+    const float R = 3.f;
+    auto aoUnder = [&](float h, float radius) {
+        Scene s;
+        uint32_t m = vcttest::addMaterial(s, glm::vec3(0.5f));
+        vcttest::addQuad(s, {-5, 0, -5}, {0, 0, 10}, {10, 0, 0}, m);
+        vcttest::addQuad(s, {-5, h, -5}, {10, 0, 0}, {0, 0, 10}, m);  // ceiling facing down
+        vcttest::finish(s);
+        s.bounds.expand(glm::vec3(0.f, 2.f, 0.f));  // the same grid for every h
+        ParamMap params;
+        SparseVoxelScene v = buildSparseVoxels(s, 64, false, 1.f, params);
+        return sparseConeAO(v, floorPoints({{0, 0, 0}, {1.3f, 0, 0.7f}}), radius, defaults());
+    };
+    std::vector<float> low = aoUnder(0.5f, R), high = aoUnder(1.f, R);
+    for (size_t i = 0; i < low.size(); ++i) {
+        EXPECT_LT(low[i], high[i]);
+        EXPECT_LT(high[i], 0.9f);
+        EXPECT_GE(low[i], 0.f);
+    }
+    // A radius well short of the ceiling (1.9 voxels, the ceiling 6 voxels up) sees nothing.
+    for (float a : aoUnder(1.f, 0.3f)) EXPECT_NEAR(a, 1.f, 1e-5);
 }
 
 // Every surface emits Le (albedo 0, no lights) and the sky is Le: whatever the cones see, they
-// gather Le, so GI = albedo * Le exactly (up to float rounding).
+// gather Le, so GI = albedo * Le exactly (up to float rounding), with either cone set.
 TEST(VdbCone, WhiteFurnace) {
-    const glm::vec3 Le(0.8f, 1.5f, 2.f);
-    Scene s;
-    uint32_t m = vcttest::addMaterial(s, glm::vec3(0.f), Le);
-    vcttest::addQuad(s, {-3, 0, -3}, {0, 0, 6}, {6, 0, 0}, m);
-    vcttest::addBox(s, {-1, 0, -1}, {1, 1.2f, 0.5f}, m);
-    vcttest::addBox(s, {1.5f, 0, 1.f}, {2.f, 2.5f, 1.5f}, m);
-    vcttest::finish(s);
+    const float Le = 1.5f;
+    Scene g;
+    uint32_t m = vcttest::addMaterial(g, glm::vec3(0.f), glm::vec3(Le));
+    vcttest::addQuad(g, {-3, 0, -3}, {0, 0, 6}, {6, 0, 0}, m);
+    vcttest::addBox(g, {-1, 0, -1}, {1, 1.2f, 0.5f}, m);
+    vcttest::addBox(g, {1.5f, 0, 1.f}, {2.f, 2.5f, 1.5f}, m);
+    vcttest::finish(g);
     ParamMap params;
-    SparseVoxelScene v = buildSparseVoxels(s, 48, true, 1.f, params);
+    SparseVoxelScene v = buildSparseVoxels(g, 48, true, 1.f, params);
     const glm::vec3 albedo(0.25f, 0.5f, 0.75f);
     auto pts = floorPoints({{0, 0, 0.9f}, {1.2f, 0, 1.2f}, {-2.5f, 0, 2.5f}, {0.2f, 0, -1.3f}}, albedo);
     for (int cones : {6, 16}) {
         ConeSettings cs = defaults();
         cs.coneCount = cones;
         cs.apertureDeg = defaultConeAperture(cones);
-        std::vector<glm::vec3> gi = sparseConeGI(v, pts, 1.f, cs);  // sky 1 != Le: expect a difference
-        std::vector<glm::vec3> furnace = sparseConeGI(v, pts, 0.f, cs);
+        std::vector<glm::vec3> gi = sparseConeGI(v, pts, Le, cs);
+        std::vector<glm::vec3> dark = sparseConeGI(v, pts, 0.f, cs);
+        std::vector<float> ao = sparseConeAO(v, pts, 1.f, cs);
+        bool someOccluded = false;
         for (size_t i = 0; i < pts.size(); ++i) {
-            (void)gi;
-            // Sky = Le in each channel: run once per channel's sky value is not possible with a
-            // scalar sky, so use a grey Le check below and here only bound the result.
-            for (int c = 0; c < 3; ++c) EXPECT_LE(furnace[i][c], albedo[c] * Le[c] * 1.0001f);
+            for (int c = 0; c < 3; ++c) {
+                EXPECT_NEAR(gi[i][c], albedo[c] * Le, 1e-4f * albedo[c] * Le) << cones << " cones, point " << i;
+                EXPECT_LT(dark[i][c], gi[i][c]) << "without sky the open part must be darker";
+            }
+            someOccluded = someOccluded || ao[i] < 0.9f;
         }
+        EXPECT_TRUE(someOccluded) << "the furnace points should see some geometry";
     }
-    // Grey furnace: Le = 1.5 everywhere, sky 1.5.
-    Scene g;
-    uint32_t mg = vcttest::addMaterial(g, glm::vec3(0.f), glm::vec3(1.5f));
-    vcttest::addQuad(g, {-3, 0, -3}, {0, 0, 6}, {6, 0, 0}, mg);
-    vcttest::addBox(g, {-1, 0, -1}, {1, 1.2f, 0.5f}, mg);
-    vcttest::addBox(g, {1.5f, 0, 1.f}, {2.f, 2.5f, 1.5f}, mg);
-    vcttest::finish(g);
-    SparseVoxelScene vg = buildSparseVoxels(g, 48, true, 1.f, params);
-    std::vector<glm::vec3> gi = sparseConeGI(vg, pts, 1.5f, defaults());
-    std::vector<float> ao = sparseConeAO(vg, pts, 1.f, defaults());
-    bool someOccluded = false;
-    for (size_t i = 0; i < pts.size(); ++i) {
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(gi[i][c], albedo[c] * 1.5f, 1e-4f * albedo[c] * 1.5f) << i;
-        someOccluded = someOccluded || ao[i] < 0.9f;
-    }
-    EXPECT_TRUE(someOccluded) << "the furnace points should see some geometry";
 }
 
 TEST(VdbCone, RejectsMissingInputs) {

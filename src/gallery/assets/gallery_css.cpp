@@ -50,9 +50,9 @@ table.kv th { background: #f0f0f0; white-space: nowrap; }
 .controls { display: flex; flex-wrap: wrap; gap: 8px 14px; align-items: center; margin-bottom: 6px; }
 .controls .group button { margin-right: 2px; }
 .readout { font-variant-numeric: tabular-nums; color: var(--muted); font-size: 12.5px; }
-#slider-range { width: min(100%, 640px); display: block; margin: 2px 0 6px; }
+#slider-range { width: min(100%, 640px, calc(50% - 8px)); display: block; margin: 2px 0 6px; }
 .views { display: flex; flex-wrap: wrap; gap: 16px; align-items: flex-start; }
-.view-fig { margin: 0; width: min(100%, 640px); }
+.view-fig { margin: 0; flex: 1 1 360px; max-width: 640px; }
 .viewport { position: relative; width: 100%; overflow: hidden; background: #222; cursor: grab; touch-action: none;
             border: 1px solid #555; user-select: none; }
 .viewport.dragging { cursor: grabbing; }

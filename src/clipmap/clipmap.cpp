@@ -1,0 +1,151 @@
+#include "clipmap/clipmap.h"
+
+#include "cone/clipmap_shared.h"
+#include "gl/program.h"
+#include "voxelize/voxel_gl.h"
+#include "voxelize/voxelize.h"
+#include "voxelize/voxelize_shared.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace vct {
+
+Bounds3 ClipmapLayout::bounds(int level) const {
+    Bounds3 b;
+    b.min = origin(level);
+    b.max = b.min + glm::vec3(float(resolution) * voxelSize(level));
+    return b;
+}
+
+ClipmapLayout computeClipmapLayout(const Bounds3& region, const glm::vec3& focus, int levelCount, int resolution) {
+    if (levelCount < 1 || levelCount > gpu::CLIPMAP_MAX_LEVELS)
+        throw std::invalid_argument("clipmap: vct.clipmap.levels = " + std::to_string(levelCount) +
+                                    " outside [1, 8]");
+    if (region.empty()) throw std::invalid_argument("clipmap: empty region");
+    for (int a = 0; a < 3; ++a)
+        if (!std::isfinite(region.min[a]) || !std::isfinite(region.max[a]) || !std::isfinite(focus[a]))
+            throw std::invalid_argument("clipmap: region or focus is not finite");
+    ClipmapLayout c;
+    c.levelCount = levelCount;
+    // A multiple of 4: level centres snap to 2 voxels, and half the resolution must stay even
+    // so every origin is a whole voxel of the next level (exact nesting). At least 32: level l
+    // then sits >= res/4 - 1.5 = 6.5 voxels of level l + 1 inside it, clear of that level's
+    // border margin and blend band (5 voxels), so the level of detail stays continuous.
+    c.resolution = std::clamp((resolution + 3) / 4 * 4, 32, 512);
+    c.region = region;
+    c.focus = glm::clamp(focus, region.min, region.max);
+    float half = 0.f;
+    for (int a = 0; a < 3; ++a)
+        half = std::max(half, std::max(c.focus[a] - region.min[a], region.max[a] - c.focus[a]));
+    half = std::max(half, 1e-6f * std::max(1.f, glm::length(c.focus)));
+    // The coarsest level spans 2 * half plus 3 voxels on each side: one for the snap of its
+    // centre, one of padding (surfaces on the boundary stay inside), one of trilinear reach.
+    const float coarseVoxel = 2.f * half / float(c.resolution - 6);
+    c.baseVoxelSize = coarseVoxel / float(1 << (levelCount - 1));
+    c.anchor = region.min;
+    const glm::dvec3 focusIndex = glm::dvec3(c.focus - c.anchor) / double(c.baseVoxelSize);
+    for (int l = 0; l < levelCount; ++l) {
+        const double snap = double(1 << (l + 1));  // two voxels of level l
+        glm::ivec3 centre;
+        for (int a = 0; a < 3; ++a) centre[a] = int(std::llround(focusIndex[a] / snap) * (long long)snap);
+        c.originIndex.push_back(centre - glm::ivec3((c.resolution / 2) << l));
+    }
+    return c;
+}
+
+namespace {
+
+// Level `fine`'s mip 1 into level `coarse`'s base where they overlap (clipmap_nest.glsl).
+void nestLevel(const VoxelGrid& fine, VoxelGrid& coarse, const glm::ivec3& offset) {
+    auto copy = [&](const GlTexture& src, const GlTexture& dst) {
+        const GLenum format = textureInternalFormat(dst.id());
+        GlProgram p = buildComputeProgram("voxelize/clipmap_nest.glsl", {{"DST_FORMAT", glslImageFormat(format)}});
+        const glm::ivec3 size = glm::max(fine.resolution / 2, glm::ivec3(1));
+        setUniform(p.id(), "uFineSize", size);
+        setUniform(p.id(), "uOffset", offset);
+        glBindTextureUnit(0, src.id());
+        bindImage3D(0, dst.id(), 0, GL_WRITE_ONLY, format);
+        glUseProgram(p.id());
+        const int g = gpu::VOX_GRID_GROUP;
+        glDispatchCompute(groupCount(size.x, g), groupCount(size.y, g), groupCount(size.z, g));
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    };
+    copy(fine.opacity, coarse.opacity);
+    if (fine.radiance && coarse.radiance) copy(fine.radiance, coarse.radiance);
+    glBindTextureUnit(0, 0);
+    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    glUseProgram(0);
+}
+
+}  // namespace
+
+Clipmap buildClipmap(const GpuScene& gpuScene, const Scene& scene, const ClipmapLayout& layout, bool inject,
+                     float sky, const ParamMap& params, PassTimer& timer) {
+    const int n = layout.levelCount;
+    if (n < 1 || int(layout.originIndex.size()) != n) throw std::invalid_argument("clipmap: layout has no levels");
+    Clipmap cm;
+    cm.layout = layout;
+    cm.levels.resize(size_t(n));
+    const size_t firstTiming = timer.timings().size();
+    const glm::ivec3 res(layout.resolution);
+    for (int l = 0; l < n; ++l)
+        cm.levels[size_t(l)] = voxelizeGrid(gpuScene, makeGridLayout(layout.origin(l), layout.voxelSize(l), res),
+                                            params, timer, "voxelize_l" + std::to_string(l));
+    if (inject) {
+        for (int l = 0; l < n; ++l) {
+            std::vector<const VoxelGrid*> outer;
+            for (int k = l + 1; k < n; ++k) outer.push_back(&cm.levels[size_t(k)]);
+            injectRadiance(cm.levels[size_t(l)], gpuScene, scene, sky, params, timer, outer,
+                           "inject_l" + std::to_string(l));
+        }
+    }
+    for (int l = 0; l < n; ++l) {
+        if (l > 0) {
+            auto scope = timer.scope("nest_l" + std::to_string(l));
+            // Level l-1's mip-1 voxel 0 in level l's voxels (origins differ by whole voxels of l).
+            const glm::ivec3 offset = (layout.originIndex[size_t(l - 1)] - layout.originIndex[size_t(l)]) / (1 << l);
+            nestLevel(cm.levels[size_t(l - 1)], cm.levels[size_t(l)], offset);
+        }
+        buildMips(cm.levels[size_t(l)], false, timer, "mips_l" + std::to_string(l));
+    }
+    cm.levelMs.assign(size_t(n), 0.0);
+    const auto& timings = timer.timings();
+    for (size_t i = firstTiming; i < timings.size(); ++i) {
+        const std::string& name = timings[i].name;
+        const size_t at = name.rfind("_l");
+        if (at == std::string::npos) continue;
+        const int l = std::atoi(name.c_str() + at + 2);
+        if (l >= 0 && l < n) cm.levelMs[size_t(l)] += timings[i].wallMs;
+    }
+    for (const VoxelGrid& g : cm.levels) cm.memoryBytes += g.memoryBytes;
+    return cm;
+}
+
+nlohmann::json clipmapStats(const Clipmap& cm) {
+    nlohmann::json levels = nlohmann::json::array();
+    for (int l = 0; l < cm.layout.levelCount; ++l) {
+        const VoxelGrid& g = cm.levels[size_t(l)];
+        const Bounds3 b = cm.layout.bounds(l);
+        levels.push_back({{"level", l},
+                          {"min", {b.min.x, b.min.y, b.min.z}},
+                          {"max", {b.max.x, b.max.y, b.max.z}},
+                          {"extent", float(cm.layout.resolution) * g.voxelSize},
+                          {"voxel_size", g.voxelSize},
+                          {"occupied", g.occupiedVoxels},
+                          {"memory_bytes", g.memoryBytes},
+                          {"time_ms", cm.levelMs.empty() ? 0.0 : cm.levelMs[size_t(l)]}});
+    }
+    const glm::vec3 f = cm.layout.focus;
+    return {{"levels", levels},
+            {"level_count", cm.layout.levelCount},
+            {"resolution", cm.layout.resolution},
+            {"voxel_size", cm.layout.baseVoxelSize},
+            {"focus", {f.x, f.y, f.z}},
+            {"mips", "isotropic"},
+            {"memory_bytes", cm.memoryBytes}};
+}
+
+}  // namespace vct

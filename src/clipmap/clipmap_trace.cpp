@@ -1,0 +1,112 @@
+// coneTraceClipmapAO / coneTraceClipmapGI (clipmap/clipmap.h): the dense path's cone passes
+// (cone/cone_trace.cpp) with the clipmap's levels bound instead of one grid.
+#include "clipmap/clipmap.h"
+
+#include "cone/clipmap_shared.h"
+#include "cone/cone_gpu.h"
+#include "cone/cone_set.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace vct {
+
+using namespace conedetail;
+
+static_assert(sizeof(gpu::ClipmapUniforms) == (gpu::CLIPMAP_MAX_LEVELS + 2) * 16,
+              "ClipmapUniforms must match its std140 layout");
+
+namespace {
+
+void checkInputs(const Clipmap& cm, const GBuffer& g, const View& view, const std::string& pass) {
+    if (cm.layout.levelCount < 1 || int(cm.levels.size()) != cm.layout.levelCount)
+        throw std::invalid_argument(pass + ": clipmap has no levels");
+    for (const VoxelGrid& level : cm.levels) checkGrid(level, pass);
+    if (g.width <= 0 || g.height <= 0 || !g.position || !g.normal || !g.geomNormal || !g.albedo)
+        throw std::invalid_argument(pass + ": G-buffer is incomplete (position, normal, geomNormal, albedo)");
+    if (g.width != view.width || g.height != view.height)
+        throw std::invalid_argument(pass + ": G-buffer size does not match the view");
+}
+
+GlTexture traceClipmap(bool gi, const Clipmap& cm, const GBuffer& gbuffer, float maxDistWorld, float sky,
+                       const ConeSettings& settings) {
+    const ClipmapLayout& layout = cm.layout;
+    const VoxelGrid& base = cm.levels.front();
+    gpu::ConeUniforms u{};
+    setGridUniforms(u, base);
+    const float halfAperture = 0.5f * settings.apertureDeg * float(M_PI) / 180.f;
+    const float maxDist = maxDistWorld / base.voxelSize;
+    u.march = glm::vec4(std::tan(halfAperture), settings.stepFactor, settings.offsetVoxels, settings.maxAlpha);
+    const float falloff = (!gi && settings.aoMapping == ConeAoMapping::Falloff && maxDist > 0.f)
+                              ? gpu::CONE_FALLOFF_LAMBDA_R / maxDist
+                              : 0.f;
+    u.limits = glm::vec4(maxDist, sky, falloff, settings.planeLimit ? gpu::CONE_PLANE_LIMIT_RATIO : 0.f);
+    const std::vector<glm::vec4> cones = diffuseConeSet(settings.coneCount);
+    u.config = glm::ivec4(int(cones.size()), gi ? gpu::CONE_AO_LINEAR : int(settings.aoMapping), 0, 0);
+    u.image = glm::ivec4(gbuffer.width, gbuffer.height, 0, 0);
+    for (size_t i = 0; i < cones.size(); ++i) u.cones[i] = cones[i];
+
+    gpu::ClipmapUniforms c{};
+    for (int l = 0; l < layout.levelCount; ++l) {
+        const float w = 1.f / float(1 << l);
+        // x_l = (x_0 * s_0 + origin_0 - origin_l) / s_l, origins in whole level-0 voxels.
+        const glm::vec3 shift = glm::vec3(layout.originIndex[0] - layout.originIndex[size_t(l)]) * w;
+        c.levelFromLevel0[l] = glm::vec4(shift, w);
+    }
+    c.info = glm::vec4(float(layout.levelCount), float(layout.resolution), float(base.levels), 0.f);
+    c.band = glm::vec4(gpu::CLIPMAP_BORDER_MARGIN, gpu::CLIPMAP_BLEND_WIDTH, 0.f, 0.f);
+
+    const GLuint program = coneProgram(gi ? "cone/clipmap_gi.glsl" : "cone/clipmap_ao.glsl",
+                                       {{"CONE_GI", gi ? "1" : "0"}});
+    GlTexture out = createTexture2D(gi ? GL_RGBA32F : GL_R32F, gbuffer.width, gbuffer.height);
+    GlBuffer ubo = bindConeUniforms(u);
+    GlBuffer clipUbo = createBuffer(sizeof(c), &c, 0);
+    glBindBufferBase(GL_UNIFORM_BUFFER, gpu::CLIPMAP_UBO_BINDING, clipUbo.id());
+
+    bindGBufferTextures(gbuffer);
+    for (int l = 0; l < layout.levelCount; ++l) {
+        const VoxelGrid& g = cm.levels[size_t(l)];
+        glBindTextureUnit(GLuint(gpu::CLIPMAP_UNIT_LEVEL0 + l), gi ? g.radiance.id() : g.opacity.id());
+    }
+    glBindImageTexture(gpu::CONE_IMAGE_OUTPUT, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                       gi ? GL_RGBA32F : GL_R32F);
+    glUseProgram(program);
+    glDispatchCompute(groupCount(gbuffer.width, gpu::CONE_LOCAL_SIZE),
+                      groupCount(gbuffer.height, gpu::CONE_LOCAL_SIZE), 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                    GL_TEXTURE_UPDATE_BARRIER_BIT);
+    glUseProgram(0);
+    for (int l = 0; l < layout.levelCount; ++l) glBindTextureUnit(GLuint(gpu::CLIPMAP_UNIT_LEVEL0 + l), 0);
+    return out;
+}
+
+}  // namespace
+
+GlTexture coneTraceClipmapAO(const Clipmap& cm, const GBuffer& gbuffer, const View& view, float radius,
+                             const ConeSettings& settings, PassTimer& timer) {
+    checkInputs(cm, gbuffer, view, "coneTraceClipmapAO");
+    settings.validate();
+    if (!(radius >= 0.f) || !std::isfinite(radius))
+        throw std::invalid_argument("coneTraceClipmapAO: radius " + std::to_string(radius) +
+                                    " must be finite and >= 0");
+    auto scope = timer.scope("cone_ao");
+    return traceClipmap(false, cm, gbuffer, radius, 0.f, settings);
+}
+
+GlTexture coneTraceClipmapGI(const Clipmap& cm, const GBuffer& gbuffer, const View& view, float sky,
+                             const ConeSettings& settings, PassTimer& timer) {
+    checkInputs(cm, gbuffer, view, "coneTraceClipmapGI");
+    settings.validate();
+    for (const VoxelGrid& g : cm.levels)
+        if (!g.radiance) throw std::invalid_argument("coneTraceClipmapGI: clipmap has no radiance (inject first)");
+    if (!(sky >= 0.f) || !std::isfinite(sky))
+        throw std::invalid_argument("coneTraceClipmapGI: sky radiance " + std::to_string(sky) +
+                                    " must be finite and >= 0");
+    // As the dense path: twice the coarsest level's diagonal bounds every path inside it.
+    const float diagonal = std::sqrt(3.f) * float(cm.layout.resolution) *
+                           cm.layout.voxelSize(cm.layout.levelCount - 1);
+    auto scope = timer.scope("cone_gi");
+    return traceClipmap(true, cm, gbuffer, 2.f * diagonal, sky, settings);
+}
+
+}  // namespace vct

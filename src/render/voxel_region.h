@@ -1,0 +1,54 @@
+// Which part of the scene the voxels cover (vct.region) and how (vct.clipmap.levels).
+//
+// AO region fitting: with --ao vct alone, only geometry within R of a visible surface point
+// can change the image (A_R of BRIEF section 1 ignores anything farther). The grid is fitted
+// to the bounds of the G-buffer's visible positions grown by R plus the cone start offset and
+// one voxel of trilinear reach, clipped to the scene bounds, and --voxel-res is spent there.
+// GI needs the whole scene (light travels far), so `auto` keeps the scene for --gi vct; an
+// explicit vct.region=fit with GI crops what the cones can gather light from.
+//
+// | key                | default | range               | meaning                                     |
+// |--------------------|---------|---------------------|---------------------------------------------|
+// | vct.region         | auto    | auto | scene | fit  | auto = fit for AO-only renders, else scene  |
+// | vct.clipmap.levels | 0       | 0..8                | nested levels around the camera (0 = dense) |
+#pragma once
+
+#include "image/image.h"
+#include "render/gbuffer.h"
+#include "render/request.h"
+#include "scene/scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace vct {
+
+// "scene" or "fit" (auto resolved: fit when --ao vct and not --gi vct).
+std::string voxelRegionMode(const RenderRequest& request);
+// vct.clipmap.levels (0 = one dense grid).
+int clipmapLevelCount(const RenderRequest& request);
+// One line for --explain: the region and levels this request will use, and why.
+std::string voxelRegionExplanation(const RenderRequest& request);
+
+// Bounds of the xyz of pixels whose w > 0 (G-buffer position convention) and finite; empty if none.
+Bounds3 visibleBounds(const Image& position);
+
+// `visible` grown by radius + marginVoxels voxels, clipped to `scene`, where the voxel is the
+// one a grid of `voxelRes` along the grown box's longest axis will have (makeGridLayout).
+Bounds3 fitAoRegion(const Bounds3& visible, const Bounds3& scene, float radius, float marginVoxels, int voxelRes);
+
+struct VoxelRegion {
+    std::string mode;   // "scene" | "fit"
+    std::string why;
+    Bounds3 bounds;     // what the voxels (or the clipmap's coarsest level) cover
+    Bounds3 visible;    // fit: bounds of the visible points
+    nlohmann::json toJson() const;
+};
+
+// The region of this request. `gbuffer` may be null (no G-buffer in the plan): then the scene.
+// offsetVoxels is the cone start offset (ConeSettings::offsetVoxels).
+VoxelRegion chooseVoxelRegion(const RenderRequest& request, const Scene& scene, const GBuffer* gbuffer,
+                              float offsetVoxels);
+
+}  // namespace vct
