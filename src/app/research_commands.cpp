@@ -1,6 +1,7 @@
 #include "app/commands.h"
 
 #include "app/render_options.h"
+#include "app/gallery_command.h"
 #include "app/sweep_commands.h"
 #include "eval/comparison.h"
 #include "gl/context.h"
@@ -80,6 +81,7 @@ int runCompare(const CompareOptions& o) {
 
 void registerResearchCommands(CLI::App& app) {
     registerSweepCommands(app);
+    registerGalleryCommand(app);
     CompareOptions& o = gCompare;
     gCompareCmd = app.add_subcommand("compare", "Score methods against the ray-traced reference on one view");
     gCompareCmd->add_option("scene", o.render.scenePath, "glTF 2.0 scene")->required();
@@ -97,6 +99,7 @@ void registerResearchCommands(CLI::App& app) {
 
 int runResearchCommand(CLI::App& app) {
     if (int rc = runSweepCommand(app); rc != -1) return rc;
+    if (int rc = runGalleryCommand(app); rc >= 0) return rc;
     if (gCompareCmd && *gCompareCmd) return runCompare(gCompare);
     return 2;
 }

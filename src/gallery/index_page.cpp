@@ -59,12 +59,19 @@ std::string indexPage(const std::vector<SiteCase>& cases, const std::string& tit
             err.push_back(jsonNumber(r, "rmse"));
             time.push_back(jsonNumber(r, "time_ms"));
         }
-        const auto er = normalizedRanks(err), tr = normalizedRanks(time);
-        for (size_t i = 0; i < cols.size(); ++i) {
-            Column& col = columns[cols[i]];
-            if (std::isfinite(er[i])) col.errorRankSum += er[i];
-            if (std::isfinite(tr[i])) col.timeRankSum += tr[i];
-            col.rows++;
+        // Ranks among the records of the same kind: AO and GI errors have different units.
+        for (const char* kind : {"ao", "gi"}) {
+            std::vector<double> kindErr(err.size(), std::nan("")), kindTime(time.size(), std::nan(""));
+            for (size_t i = 0; i < records.size(); ++i)
+                if (records[i].value("kind", "ao") == kind) kindErr[i] = err[i], kindTime[i] = time[i];
+            const auto er = normalizedRanks(kindErr), tr = normalizedRanks(kindTime);
+            for (size_t i = 0; i < cols.size(); ++i) {
+                if (records[i].value("kind", "ao") != kind) continue;
+                Column& col = columns[cols[i]];
+                if (std::isfinite(er[i])) col.errorRankSum += er[i];
+                if (std::isfinite(tr[i])) col.timeRankSum += tr[i];
+                col.rows++;
+            }
         }
         if (!c.roiOutline.empty()) anyRoi = true;
     }
@@ -104,17 +111,20 @@ std::string indexPage(const std::vector<SiteCase>& cases, const std::string& tit
         s << "<div class=\"small\">" << c.input.results.value("width", 0) << "&times;"
           << c.input.results.value("height", 0)
           << ", R = " << formatNumber(jsonNumber(c.input.results, "radius")) << "</div></th>";
-        // Best error and time of the row, for highlighting.
-        double bestErr = INFINITY, bestTime = INFINITY;
+        // Best error and time of the row per kind, for highlighting.
+        std::map<std::string, double> bestErrOf, bestTimeOf;
         for (const auto& r : records) {
+            const std::string kind = r.value("kind", "ao");
             double e = jsonNumber(r, "rmse"), t = jsonNumber(r, "time_ms");
-            if (std::isfinite(e)) bestErr = std::min(bestErr, e);
-            if (std::isfinite(t)) bestTime = std::min(bestTime, t);
+            if (!bestErrOf.count(kind)) bestErrOf[kind] = INFINITY, bestTimeOf[kind] = INFINITY;
+            if (std::isfinite(e)) bestErrOf[kind] = std::min(bestErrOf[kind], e);
+            if (std::isfinite(t)) bestTimeOf[kind] = std::min(bestTimeOf[kind], t);
         }
         std::vector<std::string> cells(columns.size(), "");
         for (size_t i = 0; i < records.size(); ++i) {
             const auto& r = records[i];
             const size_t col = columnOf[recordLabel(r, withKind)];
+            const double bestErr = bestErrOf[r.value("kind", "ao")], bestTime = bestTimeOf[r.value("kind", "ao")];
             if (!cells[col].empty()) continue;  // same label twice in a case: the first one
             std::ostringstream cell;
             const double e = jsonNumber(r, "rmse"), t = jsonNumber(r, "time_ms"),
