@@ -180,7 +180,7 @@ TEST(VdbVsGl, AoAndIndirectAgree) {
     }
     ASSERT_GT(n, im.valid.size() / 2);
     const double aoRmse = std::sqrt(aoSq / n), giRmse = std::sqrt(giSq / n), giRms = std::sqrt(giRef / n);
-    std::printf("[vdb_vs_gl] %zu pixels: AO RMSE %.4f (max %.3f), indirect RMSE %.4f (image RMS %.4f, rel %.3f)\n", n,
+    std::printf("[vdb_vs_gl] %zu pixels: AO RMSE %.2e (max %.2e), indirect RMSE %.2e (image RMS %.4f, rel %.2e)\n", n,
                 aoRmse, aoMax, giRmse, giRms, giRmse / giRms);
     // Stated agreement: AO RMSE <= 0.01; indirect RMSE <= 2% of the image's RMS.
     EXPECT_LT(aoRmse, 0.01);
