@@ -182,9 +182,10 @@ TEST(VdbVsGl, AoAndIndirectAgree) {
     const double aoRmse = std::sqrt(aoSq / n), giRmse = std::sqrt(giSq / n), giRms = std::sqrt(giRef / n);
     std::printf("[vdb_vs_gl] %zu pixels: AO RMSE %.2e (max %.2e), indirect RMSE %.2e (image RMS %.4f, rel %.2e)\n", n,
                 aoRmse, aoMax, giRmse, giRms, giRmse / giRms);
-    // Stated agreement: AO RMSE <= 0.01; indirect RMSE <= 2% of the image's RMS.
-    EXPECT_LT(aoRmse, 0.01);
-    EXPECT_LT(giRmse, 0.02 * giRms);
+    // Stated agreement (observed on llvmpipe: AO RMSE 4.6e-8, indirect 7e-5 of the image RMS):
+    // AO RMSE < 1e-3, indirect RMSE < 0.5% of the image's RMS.
+    EXPECT_LT(aoRmse, 1e-3);
+    EXPECT_LT(giRmse, 0.005 * giRms);
 }
 
 }  // namespace
