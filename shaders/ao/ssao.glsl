@@ -39,6 +39,12 @@ float ssao_evaluate(ivec2 g) {
         ivec2 q = ivec2(floor(ao_pixelFromView(s)));
         if (!ao_onScreen(q)) continue;  // off screen: skipped, neither open nor occluded
         ++counted;
+        // A hemisphere point that projects into p's own pixel is compared with the depth along
+        // the pixel centre's ray, not its own: on a slanted plane it reads occluded whenever it
+        // lies farther than p, so A -> ~0.9 instead of 1 as R -> 0 (stability suite, R = 1e-4).
+        // The depth buffer knows nothing finer than p's pixel; the point is above p's tangent
+        // plane, so it is open. (Crytek's sphere keeps its documented ~0.5 on flat ground.)
+        if (hemisphere && q == g) continue;
         vec3 scene;
         if (!ao_fetchViewPosition(q, scene)) continue;  // sky behind the point: open
         float dSample = -s.z, dScene = -scene.z;

@@ -89,7 +89,9 @@ Tri vox_loadTriangle(uint t) {
     return tri;
 }
 
-bool vox_insideGrid(Tri tri) { return all(lessThanEqual(tri.lo, tri.hi)); }
+// Zero-area triangles (collinear or coincident corners) are no surface: conservative
+// voxelization would still fill every voxel along them (a 1-long line made a visible post).
+bool vox_insideGrid(Tri tri) { return all(lessThanEqual(tri.lo, tri.hi)) && dot(tri.faceN, tri.faceN) > 0.0; }
 
 int vox_columnCount(Tri tri) {
     int a = (tri.axis + 1) % 3, b = (tri.axis + 2) % 3;

@@ -10,6 +10,8 @@
 #include "reference/reference_ao.h"
 #include "reference/reference_gi.h"
 #include "render/voxel_region.h"
+#include "vdb/sparse_cone.h"
+#include "vdb/sparse_voxels.h"
 
 #include <stdexcept>
 
@@ -20,6 +22,7 @@ struct MethodCache::Impl {
     // Voxel grids keyed by everything that shapes them (resolution, injection, bounces, ...).
     std::map<std::string, std::shared_ptr<VoxelGrid>> grids;
     std::map<std::string, std::shared_ptr<Clipmap>> clipmaps;  // vct.clipmap.levels > 0, same keys
+    std::map<std::string, std::shared_ptr<SparseVoxelScene>> sparse;  // --backend vdb
 };
 
 namespace {
@@ -127,6 +130,67 @@ std::string boundsKey(const Bounds3& b) {
     return k;
 }
 
+// --backend vdb: sparse OpenVDB voxels and the CPU cone tracer (src/vdb), on the same
+// G-buffer points as every other method. Whole-scene grid, isotropic levels.
+void runSparseVct(const RenderPlan& plan, const RenderRequest& r, const Scene& scene, const GBuffer& g,
+                  PassTimer& timer, MethodCache& cache, std::map<std::string, int>& runCounts, MethodOutputs& out,
+                  nlohmann::json& extra) {
+    const ConeSettings cone = readConeSettings(r.params);
+    const bool inject = plan.runs("inject");
+    const std::string key = gridKey(r, inject, false);
+    auto& slot = cacheOf(cache).sparse[key];
+    if (!slot || !r.reuseVoxels) {
+        auto scope = timer.scope("voxelize", false);
+        slot = std::make_shared<SparseVoxelScene>(buildSparseVoxels(scene, r.voxelRes, inject, r.sky, r.params));
+        runCounts["voxelize"]++;
+    }
+    const SparseVoxelScene& sv = *slot;
+    extra["voxels"] = {{"backend", "vdb"},
+                       {"resolution", {sv.resolution.x, sv.resolution.y, sv.resolution.z}},
+                       {"voxel_size", sv.voxelSize},
+                       {"active_voxels", sv.stats.activeVoxels},
+                       {"memory_bytes", sv.stats.memoryBytes},
+                       {"dense_bytes", sv.stats.denseBytes},
+                       {"voxelize_s", sv.stats.voxelizeSeconds},
+                       {"inject_s", sv.stats.injectSeconds},
+                       {"levels_s", sv.stats.levelsSeconds}};
+    Image alb = readTexture2D(g.albedo.id(), g.width, g.height, 4);
+    std::vector<SurfacePoint> base = gbufferPoints(g);
+    std::vector<SparsePoint> pts(base.size());
+    for (size_t i = 0; i < pts.size(); ++i) {
+        pts[i].position = base[i].position;
+        pts[i].normal = base[i].normal;
+        pts[i].geomNormal = base[i].geomNormal;
+        pts[i].albedo = glm::vec3(alb.pixels[4 * i], alb.pixels[4 * i + 1], alb.pixels[4 * i + 2]);
+        pts[i].valid = base[i].valid;
+    }
+    if (plan.runs("cone_ao")) {
+        auto scope = timer.scope("cone_ao", false);
+        std::vector<float> ao = sparseConeAO(sv, pts, r.radius, cone);
+        out.aoImage = Image(g.width, g.height, 1);
+        out.aoImage.pixels = std::move(ao);
+    }
+    if (plan.runs("cone_gi")) {
+        auto scope = timer.scope("cone_gi", false);
+        std::vector<glm::vec3> gi = sparseConeGI(sv, pts, r.sky, cone);
+        out.indirectImage = Image(g.width, g.height, 3);
+        for (size_t i = 0; i < gi.size(); ++i)
+            for (int c = 0; c < 3; ++c) out.indirectImage.pixels[3 * i + c] = gi[i][c];
+    }
+    if (plan.runs("voxel_view"))
+        throw std::invalid_argument("voxel_* AOVs show the dense grid: use --backend gl");
+}
+
+// A scene with no lights and no emission injects nothing: its voxels emit no radiance, and
+// GI cones see only the sky through them. A 1^3 zero texture (zero border) stands in for
+// the radiance volume so the cone shaders sample 0 everywhere without a special case.
+void attachDarkRadiance(VoxelGrid& g) {
+    if (g.radiance) return;
+    g.radiance = createTexture3D(GL_RGBA16F, 1, 1, 1, 1);
+    const float zero[4] = {0, 0, 0, 0};
+    glClearTexImage(g.radiance.id(), 0, GL_RGBA, GL_FLOAT, zero);
+}
+
 // Voxelize, inject and filter as the plan says, or reuse the session's grid. The region
 // (render/voxel_region.h) and the clipmap levels are part of the cache key.
 VoxelVolume voxelGridFor(const RenderPlan& plan, const RenderRequest& r, const Scene& scene, const GpuScene& gpu,
@@ -136,7 +200,7 @@ VoxelVolume voxelGridFor(const RenderPlan& plan, const RenderRequest& r, const S
         throw std::invalid_argument("--backend " + r.backend + " is not implemented yet (use --backend gl)");
     const bool inject = plan.runs("inject");
     const int levels = clipmapLevelCount(r);
-    const VoxelRegion region = chooseVoxelRegion(r, scene, gbuffer, cone.offsetVoxels);
+    const VoxelRegion region = chooseVoxelRegion(r, scene, gbuffer, cone.apertureDeg, cone.offsetVoxels);
     // Clipmaps keep isotropic mips only (clipmap/clipmap.h).
     const bool aniso = levels == 0 && cone.anisotropic;
     std::string key = gridKey(r, inject, aniso) + ";region=" + boundsKey(region.bounds);
@@ -179,6 +243,12 @@ VoxelVolume voxelGridFor(const RenderPlan& plan, const RenderRequest& r, const S
         runCounts["mips"]++;
         if (r.reuseVoxels) impl.grids[key] = v.grid;
     }
+    if (!inject && plan.runs("cone_gi")) {
+        if (v.clipmap)
+            for (VoxelGrid& level : v.clipmap->levels) attachDarkRadiance(level);
+        else
+            attachDarkRadiance(*v.grid);
+    }
     if (v.clipmap) {
         // The coarsest level covers the region: it serves the voxel_* views. Aliasing
         // shared_ptr: the level lives as long as the clipmap.
@@ -214,7 +284,9 @@ MethodOutputs runMethodPasses(const RenderPlan& plan, const RenderRequest& reque
     }
     if (plan.runs("reference_ao")) runReferenceAo(request, scene, *gbuffer, view, timer, cache, out, extra);
     if (plan.runs("reference_gi")) runReferenceGi(request, scene, view, timer, cache, out, extra);
-    if (plan.runs("voxelize")) {
+    if (plan.runs("voxelize") && request.backend == "vdb") {
+        runSparseVct(plan, request, scene, *gbuffer, timer, cache, runCounts, out, extra);
+    } else if (plan.runs("voxelize")) {
         const ConeSettings cone = readConeSettings(request.params);
         VoxelVolume volume = voxelGridFor(plan, request, scene, gpu, gbuffer, cone, timer, cache, runCounts);
         std::shared_ptr<VoxelGrid> grid = volume.grid;

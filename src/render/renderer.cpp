@@ -99,6 +99,17 @@ RenderResult RenderSession::render(const RenderRequest& request) {
     MethodOutputs m = runMethodPasses(plan, request, mScene, mImpl->gpu, gbuffer.get(), view, timer,
                                       mImpl->methods, mRunCounts, result.extra);
 
+    // CPU methods (the reference, the sparse backend) hand images: the composite reads textures.
+    if (plan.runs("composite")) {
+        if (!m.ao && !m.aoImage.empty()) {
+            m.ao = createTexture2D(GL_R32F, request.width, request.height);
+            uploadTexture2D(m.ao.id(), m.aoImage);
+        }
+        if (!m.indirect && !m.indirectImage.empty()) {
+            m.indirect = createTexture2D(GL_RGBA32F, request.width, request.height);
+            uploadTexture2D(m.indirect.id(), m.indirectImage);
+        }
+    }
     CompositeOutputs comp;
     if (plan.runs("composite")) {
         CompositeInputs in;

@@ -28,7 +28,7 @@ std::string voxelRegionExplanation(const RenderRequest& r) {
     const std::string mode = voxelRegionMode(r);
     const bool explicitMode = r.params.has("vct.region") && r.params.values().at("vct.region") != "auto";
     if (mode == "fit")
-        s << "region fit to the visible points grown by R = " << r.radius
+        s << "region fit to the visible points grown by R = " << r.radius << " + cone footprint"
           << (r.gi == "vct" ? " (vct.region=fit: GI cones see only that)" : " (AO only: nothing farther occludes)");
     else
         s << "region = scene bounds"
@@ -54,13 +54,13 @@ Bounds3 visibleBounds(const Image& position) {
     return b;
 }
 
-Bounds3 fitAoRegion(const Bounds3& visible, const Bounds3& scene, float radius, float marginVoxels, int voxelRes) {
+Bounds3 fitAoRegion(const Bounds3& visible, const Bounds3& scene, float reach, float marginVoxels, int voxelRes) {
     if (visible.empty() || scene.empty()) return scene;
     // makeGridLayout gives voxel = longest extent / (res - 2); with the extent itself
-    // (visible + 2 R + 2 m voxel) that solves to voxel = (visible + 2 R) / (res - 2 - 2 m).
+    // (visible + 2 reach + 2 m voxel) that solves to voxel = (visible + 2 reach) / (res - 2 - 2 m).
     const float cells = std::max(1.f, float(voxelRes - 2) - 2.f * marginVoxels);
-    const float voxel = (visible.maxExtent() + 2.f * radius) / cells;
-    const float grow = radius + marginVoxels * voxel;
+    const float voxel = (visible.maxExtent() + 2.f * reach) / cells;
+    const float grow = reach + marginVoxels * voxel;
     Bounds3 b;
     b.min = glm::max(visible.min - glm::vec3(grow), scene.min);
     b.max = glm::min(visible.max + glm::vec3(grow), scene.max);
@@ -79,7 +79,7 @@ nlohmann::json VoxelRegion::toJson() const {
 }
 
 VoxelRegion chooseVoxelRegion(const RenderRequest& r, const Scene& scene, const GBuffer* gbuffer,
-                              float offsetVoxels) {
+                              float apertureDeg, float offsetVoxels) {
     VoxelRegion region;
     region.mode = voxelRegionMode(r);
     region.bounds = scene.bounds;
@@ -98,11 +98,12 @@ VoxelRegion chooseVoxelRegion(const RenderRequest& r, const Scene& scene, const 
         region.why = "no visible surface (all sky): nothing to fit";
         return region;
     }
-    // The cones start offsetVoxels along the normal; one more voxel of trilinear reach.
-    region.bounds = fitAoRegion(region.visible, scene.bounds, r.radius, offsetVoxels + 1.f, r.voxelRes);
+    // R and the footprint's radius there; the start offset and one voxel of trilinear support.
+    const float reach = r.radius * (1.f + std::tan(0.5f * apertureDeg * 3.14159265f / 180.f));
+    region.bounds = fitAoRegion(region.visible, scene.bounds, reach, offsetVoxels + 1.f, r.voxelRes);
     std::ostringstream why;
-    why << "visible points grown by R = " << r.radius << " + " << offsetVoxels + 1.f
-        << " voxels, clipped to the scene";
+    why << "visible points grown by the cone reach " << reach << " (R = " << r.radius << ") + "
+        << offsetVoxels + 1.f << " voxels, clipped to the scene";
     if (r.gi == "vct") why << " (vct.region=fit with GI: light from outside is lost)";
     region.why = why.str();
     return region;

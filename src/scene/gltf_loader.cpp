@@ -674,6 +674,12 @@ struct Loader {
             for (double x : *v)
                 if (!std::isfinite(x)) fail(where + ": transform has a non-finite value");
         const glm::mat4 worldFromLocal = worldFromParent * localFromNode(node);
+        // Finite doubles can overflow the float matrix (a translation of 1e39): blame the node,
+        // not the first vertex it moves.
+        for (int c = 0; c < 4; ++c)
+            if (!std::isfinite(worldFromLocal[c].x) || !std::isfinite(worldFromLocal[c].y) ||
+                !std::isfinite(worldFromLocal[c].z) || !std::isfinite(worldFromLocal[c].w))
+                fail(where + ": world transform is not finite in single precision");
         const bool offscreen = parentOffscreen || nodeIsOffscreen(node);
 
         if (node.mesh >= 0) {

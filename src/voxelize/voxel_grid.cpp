@@ -17,8 +17,11 @@ VoxelGrid makeGridLayout(const Bounds3& bounds, int maxResolution) {
     float extent = std::max(bounds.maxExtent(), 1e-30f);
     g.voxelSize = extent / float(std::max(1, maxResolution - 2));
     glm::vec3 e = bounds.extent();
+    // ceil of a ratio that is an integer up to float rounding (2 / (2 / 23) = 23.000002 at one
+    // scale, 23 at another) must not flip: the grid would shift by half a voxel with the scene's
+    // scale. A thousandth of a voxel past a whole count falls into the padding voxel.
     for (int a = 0; a < 3; ++a)
-        g.resolution[a] = std::clamp(int(std::ceil(e[a] / g.voxelSize)) + 2, 1, maxResolution);
+        g.resolution[a] = std::clamp(int(std::ceil(e[a] / g.voxelSize - 1e-3f)) + 2, 1, maxResolution);
     g.resolution = glm::max(g.resolution, glm::ivec3(1));
     glm::vec3 span = glm::vec3(g.resolution) * g.voxelSize;
     return makeGridLayout(bounds.center() - 0.5f * span, g.voxelSize, g.resolution);

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <map>
 
@@ -38,7 +39,9 @@ Outcomes runMethods(RenderSession& session, const RenderRequest& r, const std::v
     Outcomes out;
     for (const auto& m : methods) {
         Outcome o = runMethod(session, r, m);
-        if (expectAccepted) EXPECT_FALSE(o.refused) << caseName << " / " << m.label << ": " << o.message;
+        if (expectAccepted) {
+            EXPECT_FALSE(o.refused) << caseName << " / " << m.label << ": " << o.message;
+        }
         for (const auto& v : o.violations) ADD_FAILURE() << caseName << " / " << m.label << ": " << v;
         out[m.label] = std::move(o);
     }
@@ -78,7 +81,9 @@ TEST(StabilityParams, RadiusNearZeroAndLargerThanTheScene) {
             std::optional<double> err;
             if (out.ok()) err = meanAbsErrorTo(out.ao, out.depth, 1.0);
             recordCell("R = 1e-4", m.label, cellFor(out, err));
-            if (err && m.ao != "ssao-crytek") EXPECT_LT(*err, 0.05) << m.label << ": AO does not tend to 1 as R -> 0";
+            if (err && m.ao != "ssao-crytek") {
+                EXPECT_LT(*err, 0.05) << m.label << ": AO does not tend to 1 as R -> 0";
+            }
         }
     }
     {
@@ -91,13 +96,21 @@ TEST(StabilityParams, RadiusNearZeroAndLargerThanTheScene) {
 }
 
 // 4^3 .. 256^3 run; 512^3 either runs or is refused with a clear error, never a crash.
+// Each grid's wall time and memory go to the findings.
 TEST(StabilityParams, VoxelGridResolutions) {
     Scene s = cornerScene(1.f);
     RenderSession session(s);
     const std::vector<Method> methods = {col("vct AO"), col("vct GI"), col("reference AO"), col("reference GI")};
     RenderRequest r = requestFor(cornerCamera(1.f), 0.5f, 32);
     auto ref = runMethods(session, r, {col("reference AO"), col("reference GI")}, "voxels ref");
-    for (int res : {4, 16, 64, 256, 512}) {
+    // 512^3 takes about a minute and several GB on llvmpipe: only with VCT_STABILITY_SLOW=1
+    // (scripts/make_stability_doc.sh sets it).
+    std::vector<int> resolutions = {4, 16, 64, 256};
+    const char* slow = std::getenv("VCT_STABILITY_SLOW");
+    if (slow && std::string(slow) == "1") resolutions.push_back(512);
+    else recordNote("voxels 512^3: not run (set VCT_STABILITY_SLOW=1; scripts/make_stability_doc.sh does).");
+    resolutions.push_back(1024);  // ~35 GB for this scene's 1024x513x1024: refused on a machine with < 70 GB
+    for (int res : resolutions) {
         r.voxelRes = res;
         const std::string name = "voxels " + std::to_string(res) + "^3";
         recordCaseInfo(name, "vct on the corner scene with a " + std::to_string(res) + "^3 grid (R = 0.5).",
@@ -106,9 +119,11 @@ TEST(StabilityParams, VoxelGridResolutions) {
         Outcomes o;
         for (const auto& label : {"vct AO", "vct GI"}) {
             Outcome out = runMethod(session, r, col(label));
-            if (res <= 256) EXPECT_FALSE(out.refused) << name << " " << label << ": " << out.message;
-            else if (out.refused)  // must say what is wrong, not fail somewhere deep
+            if (res <= 256) {
+                EXPECT_FALSE(out.refused) << name << " " << label << ": " << out.message;
+            } else if (out.refused) {  // must say what is wrong, not fail somewhere deep
                 EXPECT_NE(out.message.find("voxel"), std::string::npos) << out.message;
+            }
             for (const auto& v : out.violations) ADD_FAILURE() << name << " / " << label << ": " << v;
             o[label] = std::move(out);
         }
@@ -117,6 +132,16 @@ TEST(StabilityParams, VoxelGridResolutions) {
             recordCell(name, label, cellFor(o[label], errorToReference(col(label), o[label], o)));
             recordNote(name + " " + label + ": " + (o[label].refused ? "refused (" + o[label].message + ")"
                                                                       : fmt(o[label].ms / 1000.0) + " s"));
+        }
+        if (o["vct GI"].ok()) {
+            // Voxel memory of the grid (GPU textures) as the renderer reports it.
+            RenderRequest rg = r;
+            rg.gi = "vct";
+            rg.aovs = {"indirect"};
+            RenderResult res2 = session.render(rg);  // cached grid: no new voxelization
+            if (res2.extra.contains("voxels"))
+                recordNote(name + " voxel memory: " +
+                           fmt(res2.extra["voxels"].value("memory_bytes", 0.0) / 1048576.0) + " MiB");
         }
     }
 }
@@ -155,7 +180,9 @@ TEST(StabilityParams, AlbedoZeroManyBounces) {
         std::optional<double> err;
         if (out.ok()) err = m.isGi() ? surfaceMax(out.indirect, out.depth) : *errorToReference(m, out, o);
         if (m.label == "reference AO") err = std::nullopt;
-        if (m.isGi() && err) EXPECT_LE(*err, 1e-6) << m.label;
+        if (m.isGi() && err) {
+            EXPECT_LE(*err, 1e-6) << m.label;
+        }
         recordCell(name, m.label, cellFor(out, err));
     }
 }
@@ -192,9 +219,9 @@ TEST(StabilityParams, AlbedoOneWhiteFurnace) {
 // Inside a closed box whose walls all emit Le with albedo rho: L = Le / (1 - rho), so the
 // indirect part is Le rho / (1 - rho) everywhere; with N bounces it is Le (rho - rho^(N+1)) / (1 - rho).
 TEST(StabilityParams, ClosedEmissiveBoxConverges) {
-    const float rho = 0.8f, Le = 1.f;
+    const double rho = 0.8, Le = 1.0;
     Scene s;
-    uint32_t mat = vcttest::addMaterial(s, glm::vec3(rho), glm::vec3(Le));
+    uint32_t mat = vcttest::addMaterial(s, glm::vec3(float(rho)), glm::vec3(float(Le)));
     vcttest::addBox(s, {0, 0, 0}, {2, 2, 2}, mat);
     vcttest::finish(s);
     Camera c;
@@ -207,25 +234,31 @@ TEST(StabilityParams, ClosedEmissiveBoxConverges) {
     r.sky = 0.f;
     r.params.set("vct.bounces", "8");
     r.params.set("reference.bounces", "64");
+    r.params.set("reference.roulette-bounce", "64");  // no roulette: the closed form is exact per path
     auto o = runMethods(session, r, giMethodColumns(), "emissive box");
-    const double limit = Le * rho / (1 - rho);
+    // Judged on beauty = Le + direct + indirect (the reference counts one reflection of an
+    // emitter as direct, vct as indirect; the sum is the same quantity).
+    const double limit = Le / (1 - rho);
     const std::string name = "closed box, rho 0.8, all emit";
     recordCaseInfo(name, "inside a closed 2^3 box, every wall Le = 1 and rho = 0.8, sky 0; vct 8 bounces, reference 64.",
-                   "max indirect / the infinite-bounce limit Le rho / (1 - rho) = 4 (must stay <= 1), then mean "
-                   "relative error to the 8-bounce (vct) / 64-bounce (reference) closed form.");
+                   "beauty (Le + direct + indirect) / the infinite-bounce limit Le / (1 - rho) = 5: max over pixels "
+                   "(must stay <= 1; the reference's per-pixel max carries its noise) and mean (1 when converged).");
     for (const auto& m : giMethodColumns()) {
         const Outcome& out = o[m.label];
         Cell cell = cellFor(out);
         if (out.ok()) {
-            const int n = m.gi == "vct" ? 8 + 1 : 64;  // vct: direct injection + 8 bounces
-            const double expected = Le * (rho - std::pow(rho, n + 1)) / (1 - rho);
-            const double mx = surfaceMax(out.indirect, out.depth) / limit;
-            const double err = meanAbsErrorTo(out.indirect, out.depth, expected) / expected;
-            cell.text = "max " + fmt(mx) + ", err " + fmt(err);
-            const double bound = m.gi == "reference" ? 1.0 + 0.05 : 1.0 + 0.1;  // reference: its noise
-            EXPECT_LE(mx, bound) << m.label << ": indirect grows past Le rho / (1 - rho)";
-            if (mx > bound) cell.ok = false;
-            if (m.gi == "reference") EXPECT_LT(err, 0.05);
+            const double mx = surfaceMax(out.beauty, out.depth) / limit;
+            const double mean = surfaceMean(out.beauty, out.depth) / limit;
+            cell.text = "max " + fmt(mx) + ", mean " + fmt(mean);
+            if (m.gi == "reference") {
+                // 64 bounces: 1 - 0.8^65 = 1 - 5e-7 of the limit; the mean of 1600 pixels x 16 paths.
+                EXPECT_NEAR(mean, 1.0, 0.05) << m.label;
+                if (std::abs(mean - 1.0) > 0.05) cell.ok = false;
+            } else {
+                // Deterministic: every pixel must stay under the limit (8 bounces: 1 - 0.8^10 = 0.89).
+                EXPECT_LE(mx, 1.0 + 1e-3) << m.label << ": energy grows past Le / (1 - rho)";
+                if (mx > 1.0 + 1e-3) cell.ok = false;
+            }
         }
         recordCell(name, m.label, cell);
     }
@@ -262,7 +295,9 @@ TEST(StabilityParams, SkyZeroNoLights) {
         std::optional<double> err;
         if (out.ok()) err = m.isGi() ? std::optional<double>(surfaceMax(out.indirect, out.depth))
                                      : errorToReference(m, out, o);
-        if (m.isGi() && err) EXPECT_EQ(*err, 0.0) << m.label;
+        if (m.isGi() && err) {
+            EXPECT_EQ(*err, 0.0) << m.label;
+        }
         recordCell(name, m.label, cellFor(out, err));
     }
 }
