@@ -178,6 +178,7 @@ TEST(StabilityCli, OutOfRangeParametersAreRejectedWithTheirRange) {
         allOk = allOk && ok;
         std::string msg = res.output;
         while (!msg.empty() && msg.back() == '\n') msg.pop_back();
+        if (const auto nl = msg.rfind('\n'); nl != std::string::npos) msg = msg.substr(nl + 1);  // the error line
         recordNote("`" + c.args + "` -> exit " + std::to_string(res.exitCode) + ": " + msg);
     }
     recordCell(name, "renderer", {allOk ? "refused with range (exit 2)" : "range missing", allOk});
