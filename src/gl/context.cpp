@@ -3,6 +3,7 @@
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
+#include <atomic>
 #include <cstring>
 #include <mutex>
 #include <stdexcept>
@@ -53,6 +54,12 @@ EGLDisplay openDeviceDisplay() {
 
 }  // namespace
 
+namespace {
+std::atomic<int> gLiveContexts{0};
+}
+
+bool glContextAlive() { return gLiveContexts.load() > 0; }
+
 GlDevice parseGlDevice(const std::string& name) {
     if (name == "auto") return GlDevice::Auto;
     if (name == "surfaceless") return GlDevice::Surfaceless;
@@ -94,6 +101,7 @@ GlContext::GlContext(GlDevice device) : mImpl(std::make_unique<Impl>()) {
     mInfo.gpuTimerQueries = mInfo.renderer.find("llvmpipe") == std::string::npos &&
                             mInfo.renderer.find("softpipe") == std::string::npos;
 
+    gLiveContexts++;
     glEnable(GL_DEBUG_OUTPUT);
     glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
     glDebugMessageCallback(debugCallback, &mImpl->errors);
@@ -101,6 +109,7 @@ GlContext::GlContext(GlDevice device) : mImpl(std::make_unique<Impl>()) {
 }
 
 GlContext::~GlContext() {
+    if (mImpl->context != EGL_NO_CONTEXT) gLiveContexts--;
     if (mImpl->display != EGL_NO_DISPLAY) {
         eglMakeCurrent(mImpl->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         if (mImpl->context != EGL_NO_CONTEXT) eglDestroyContext(mImpl->display, mImpl->context);

@@ -8,6 +8,10 @@
 
 namespace vct {
 
+// False once the process-wide context is gone (static destruction at exit): an owner that
+// outlives the context then has nothing left to delete and must not call GL.
+bool glContextAlive();
+
 template <void (*Delete)(GLuint)>
 class GlHandle {
 public:
@@ -24,7 +28,10 @@ public:
 
     GLuint id() const { return mId; }
     explicit operator bool() const { return mId != 0; }
-    void reset() { if (mId) Delete(mId); mId = 0; }
+    void reset() {
+        if (mId && glContextAlive()) Delete(mId);
+        mId = 0;
+    }
 
 private:
     GLuint mId = 0;
