@@ -30,6 +30,12 @@ void ReferenceSettings::validate() const {
     if (!(sky >= 0.f) || !std::isfinite(sky)) fail("sky must be finite and >= 0");
 }
 
+bool referencePixelAreaFromParams(const ParamMap& params) {
+    return params.getChoice("reference.pixel", "center", {"center", "area"},
+                            "reference: AO at the G-buffer's pixel centres, or averaged over the pixel with "
+                            "jittered primary rays (box filter, as Cycles)") == "area";
+}
+
 ReferenceSettings referenceSettingsFromParams(const ParamMap& params, ReferenceSettings s) {
     s.spp = params.getInt("reference.spp", s.spp, 1, 1 << 20, "reference samples per pixel (budget)");
     s.seed = uint64_t(params.getInt("reference.seed", int(s.seed), 0, std::numeric_limits<int>::max(),

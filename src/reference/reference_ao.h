@@ -61,6 +61,9 @@ struct ReferenceSettings {
 // "reference.bounces", "reference.roulette-bounce", "reference.ray-mode" on top of `base`.
 // The AO radius and the sky radiance are shared by every method: the caller sets them.
 ReferenceSettings referenceSettingsFromParams(const ParamMap& params, ReferenceSettings base = {});
+// "reference.pixel": false = evaluate at the G-buffer's pixel centres (default), true =
+// average over the pixel with jittered primary rays (box filter, as Cycles).
+bool referencePixelAreaFromParams(const ParamMap& params);
 
 struct ReferenceAO {
     int width = 0, height = 0;           // image modes: pixel (x, y) is element y * width + x, top row first

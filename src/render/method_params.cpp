@@ -28,9 +28,7 @@ void documentAllMethodParams() {
     readAoBlurSettings(empty, true);
     readConeSettings(empty);
     referenceSettingsFromParams(empty);
-    empty.getChoice("reference.pixel", "center", {"center", "area"},
-                    "reference: AO at the G-buffer's pixel centres, or averaged over the pixel with jittered "
-                    "primary rays (box filter, as Cycles)");
+    referencePixelAreaFromParams(empty);
     empty.getInt("vct.bounces", 0, 0, 8, "extra diffuse bounces traced between voxels");
     empty.getInt("vct.view.level", 0, 0, 16, "mip level shown by voxel_* AOVs");
 }

@@ -68,9 +68,7 @@ std::vector<SurfacePoint> gbufferPoints(const GBuffer& g) {
 void runReferenceAo(const RenderRequest& r, const Scene& scene, const GBuffer& g, const View& view,
                     PassTimer& timer, MethodCache& cache, MethodOutputs& out, nlohmann::json& extra) {
     const ReferenceSettings settings = referenceSettings(r);
-    const bool area = r.params.getChoice("reference.pixel", "center", {"center", "area"},
-                                         "reference: AO at the G-buffer's pixel centres, or averaged over the "
-                                         "pixel with jittered primary rays (box filter, as Cycles)") == "area";
+    const bool area = referencePixelAreaFromParams(r.params);
     const EmbreeScene& embree = embreeOf(cache, scene);
     auto scope = timer.scope("reference_ao", false);
     ReferenceAO ao = area ? referenceAOPixelArea(embree, view, settings)
@@ -90,7 +88,7 @@ void runReferenceAo(const RenderRequest& r, const Scene& scene, const GBuffer& g
 void runReferenceGi(const RenderRequest& r, const Scene& scene, const View& view, PassTimer& timer,
                     MethodCache& cache, MethodOutputs& out, nlohmann::json& extra) {
     const ReferenceSettings settings = referenceSettings(r);
-    const bool area = r.params.getChoice("reference.pixel", "center", {"center", "area"}) == "area";
+    const bool area = referencePixelAreaFromParams(r.params);
     const EmbreeScene& embree = embreeOf(cache, scene);
     auto scope = timer.scope("reference_gi", false);
     ReferenceGI gi = referenceGI(embree, view, settings, area);
@@ -196,8 +194,6 @@ void attachDarkRadiance(VoxelGrid& g) {
 VoxelVolume voxelGridFor(const RenderPlan& plan, const RenderRequest& r, const Scene& scene, const GpuScene& gpu,
                          const GBuffer* gbuffer, const ConeSettings& cone, PassTimer& timer, MethodCache& cache,
                          std::map<std::string, int>& runCounts) {
-    if (r.backend != "gl")
-        throw std::invalid_argument("--backend " + r.backend + " is not implemented yet (use --backend gl)");
     const bool inject = plan.runs("inject");
     const int levels = clipmapLevelCount(r);
     const VoxelRegion region = chooseVoxelRegion(r, scene, gbuffer, cone.apertureDeg, cone.offsetVoxels);

@@ -61,6 +61,8 @@ RenderResult RenderSession::render(const RenderRequest& request) {
         throw std::invalid_argument("--radius must be finite and > 0");
     if (!std::isfinite(request.sky) || request.sky < 0.f)
         throw std::invalid_argument("--sky must be finite and >= 0");
+    if (request.backend != "gl" && request.backend != "vdb")
+        throw std::invalid_argument("--backend " + request.backend + ": expected gl or vdb");
 
     GlContext& gl = GlContext::shared();
     RenderResult result;
