@@ -144,7 +144,8 @@ SurfaceHit EmbreeScene::surfaceAt(uint32_t triangle, float u, float v, const glm
     // Embree never reports hits on zero-area triangles, but a sliver's cross product can
     // still underflow in float: fall back to facing the ray.
     ng = len > 0.f && std::isfinite(len) ? ng / len : -glm::normalize(incomingDir);
-    if (glm::dot(ng, incomingDir) > 0.f) ng = -ng;
+    h.frontFacing = !(glm::dot(ng, incomingDir) > 0.f);
+    if (!h.frontFacing) ng = -ng;
     h.geomNormal = ng;
     glm::vec3 ns = ng;
     if (s.normals.size() == s.positions.size()) {

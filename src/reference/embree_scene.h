@@ -24,6 +24,7 @@ namespace vct {
 struct SurfaceHit {
     glm::vec3 position{0.f};
     glm::vec3 geomNormal{0.f, 0.f, 1.f};     // unit, faces the side the ray came from
+    bool frontFacing = true;                 // the ray came from the side of the winding normal
     glm::vec3 shadingNormal{0.f, 0.f, 1.f};  // unit, interpolated, on geomNormal's side
     glm::vec2 uv{0.f};
     uint32_t triangle = 0;

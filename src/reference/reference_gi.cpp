@@ -31,6 +31,15 @@ uint32_t materialOf(const Scene& s, uint32_t tri) {
     return tri < s.triangleMaterial.size() ? s.triangleMaterial[tri] : uint32_t(-1);
 }
 
+// Emitted radiance leaving hit `h` back along the ray. A single-sided glTF material's back
+// face is culled, so it emits only from its front; doubleSided materials emit both ways.
+glm::vec3 emissionTowardRay(const Scene& s, const SurfaceHit& h) {
+    const uint32_t m = materialOf(s, h.triangle);
+    const bool twoSided = m < s.materials.size() && s.materials[m].doubleSided;
+    if (!h.frontFacing && !twoSided) return glm::vec3(0.f);
+    return materialEmission(s, m, h.uv);
+}
+
 // Emissive triangles, chosen with probability proportional to area x max(emissiveFactor)
 // (textures modulate emission but the factor bounds it, so the pdf is > 0 wherever Le > 0).
 struct EmitterTable {
@@ -127,6 +136,9 @@ struct PathTracer {
 
         glm::vec3 throughput(1.f);
         for (int bounce = 0; bounce < settings.bounces; ++bounce) {
+            // BRIEF section 1: indirect = Lo - Le - the direct term from (punctual) lights, so
+            // light from emissive surfaces is indirect even after one reflection, as in every
+            // renderer method (the raster direct pass sees punctual lights only).
             glm::vec3& target = bounce == 0 ? out.direct : out.indirect;
             const glm::vec3 albedo = materialAlbedo(s, materialOf(s, h.triangle), h.uv);
             if (maxComponent(albedo) <= 0.f) break;
@@ -161,13 +173,13 @@ struct PathTracer {
                     float cosS = glm::dot(h.shadingNormal, wi);
                     if (cosS > 0.f && cosL > 0.f && glm::dot(h.geomNormal, wi) > 0.f) {
                         float pdfLight = emitters.areaPdf[lt] * dist2 / cosL;
-                        glm::vec3 le = materialEmission(s, materialOf(s, lt), lh.uv);
+                        glm::vec3 le = emissionTowardRay(s, lh);
                         if (maxComponent(le) > 0.f && pdfLight > 0.f && std::isfinite(pdfLight)) {
                             glm::vec3 end = offsetRayOrigin(lh.position, lh.geomNormal, lh.errorScale);
                             ++out.rays;
                             if (!scene.occluded(origin, end - origin, 1.f)) {
                                 float w = powerHeuristic(pdfLight, cosS * kInvPi);
-                                target += throughput * f * le * (cosS * w / pdfLight);
+                                out.indirect += throughput * f * le * (cosS * w / pdfLight);
                             }
                         }
                     }
@@ -187,12 +199,12 @@ struct PathTracer {
                 break;
             }
             h = scene.surfaceAt(tri, u, v, wi);
-            glm::vec3 le = materialEmission(s, materialOf(s, tri), h.uv);
+            glm::vec3 le = emissionTowardRay(s, h);
             if (maxComponent(le) > 0.f) {
                 float cosL = std::abs(glm::dot(h.geomNormal, wi));
                 float pdfLight = cosL > 0.f ? emitters.areaPdf[tri] * t * t / cosL : 0.f;
                 float w = std::isfinite(pdfLight) ? powerHeuristic(pdfBsdf, pdfLight) : 0.f;
-                target += throughput * le * w;
+                out.indirect += throughput * le * w;
             }
             // Russian roulette: survive with probability q, divide by q (unbiased).
             if (bounce + 1 >= settings.rouletteBounce) {

@@ -8,7 +8,8 @@
 // - punctual lights by next-event estimation with shadow rays, all lights at every vertex:
 //   directional irradiance = color (lux), point/spot = color (candela) / d^2, spots with the
 //   glTF spec's smooth falloff t^2, t = saturate((cos - cos_outer) / (cos_inner - cos_outer));
-// - emissive triangles (two-sided Lambertian emitters) sampled by area x max(emissiveFactor)
+// - emissive triangles (Lambertian emitters, from their front face only unless the material
+//   is doubleSided: glTF culls a single-sided back face) sampled by area x max(emissiveFactor)
 //   and combined with BSDF-sampled emitter hits by MIS (power heuristic, Veach 1997);
 // - escaped rays see the sky (not light-sampled: cosine sampling is already ideal for it);
 // - `bounces` = B is the maximum number of diffuse reflections along a path (pbrt's
@@ -17,8 +18,11 @@
 //   survival probability, so it adds noise, not bias.
 // Outputs, RGB, top row first:
 //   emission  Le of the first surface seen;
-//   direct    light reaching the eye after exactly one reflection from lights and emitters;
-//   indirect  Lo - Le - direct: the sky (seen after >= 1 reflection) and every longer path;
+//   direct    light reaching the eye after exactly one reflection from punctual lights;
+//   indirect  Lo - Le - direct (BRIEF section 1): light from emissive surfaces (after one
+//             reflection or more), the sky (seen after >= 1 reflection) and every longer
+//             path. The renderer's direct pass sees punctual lights only, so emitters are
+//             the GI methods' job, and their `indirect` is compared with this one;
 //   beauty    Le + direct + indirect, and the sky radiance where the camera ray escapes.
 #pragma once
 
