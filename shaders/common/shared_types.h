@@ -10,6 +10,8 @@ namespace vct { namespace gpu {
 using vec2 = glm::vec2; using vec3 = glm::vec3; using vec4 = glm::vec4;
 using ivec4 = glm::ivec4; using uvec4 = glm::uvec4; using mat4 = glm::mat4;
 using uint = std::uint32_t;
+// GLSL's built-ins for the inline functions of shared headers (scalars and vectors alike).
+using glm::clamp; using glm::dot; using glm::exp2; using glm::log2; using glm::max; using glm::min;
 }}  // namespace vct::gpu
 #define VCT_BEGIN_NAMESPACE namespace vct { namespace gpu {
 #define VCT_END_NAMESPACE }}

@@ -15,6 +15,9 @@ layout(binding = 2) uniform sampler2D gbufGeomNormal;
 layout(binding = 3) uniform sampler2D gbufAlbedo;
 
 layout(binding = CONE_UNIT_OPACITY) uniform sampler3D cone_isoTexture;
+#if CONE_GI
+layout(binding = CONE_UNIT_NORMAL) uniform sampler3D cone_normalTexture;
+#endif
 #if CONE_ANISO
 layout(binding = CONE_UNIT_ANISO + 0) uniform sampler3D cone_anisoPX;
 layout(binding = CONE_UNIT_ANISO + 1) uniform sampler3D cone_anisoNX;
@@ -49,7 +52,7 @@ vec4 cone_sampleAniso(vec3 tc, vec3 d, float lod) {
     vec4 x = d.x >= 0.0 ? textureLod(cone_anisoPX, tc, lod) : textureLod(cone_anisoNX, tc, lod);
     vec4 y = d.y >= 0.0 ? textureLod(cone_anisoPY, tc, lod) : textureLod(cone_anisoNY, tc, lod);
     vec4 z = d.z >= 0.0 ? textureLod(cone_anisoPZ, tc, lod) : textureLod(cone_anisoNZ, tc, lod);
-    return w.x * x + w.y * y + w.z * z;
+    return cone_blendDirectional(w, x, y, z);
 }
 #endif
 
@@ -67,6 +70,18 @@ vec4 cone_sampleGrid(vec3 p, vec3 d, float lod) {
     return cone_sampleIso(tc, lod);
 #endif
 }
+
+#if CONE_GI
+// vox_facingWeight (voxelize_shared.h) of the sample's voxels: their mean normal at the
+// sample's level (normal mips are coverage-weighted, a = coverage). Without it a cone that
+// meets a surface's back gathers the light of its front, at every level, and the
+// directional mips cannot tell: a horizontal emitter is as bright to a cone crossing it at
+// 60 degrees from above as from below.
+float cone_facing(vec3 p, vec3 d, float lod) {
+    vec4 n = textureLod(cone_normalTexture, p / u.gridResolution.xyz, lod);
+    return vox_facingWeight(n.xyz / max(n.w, 1e-4), d);
+}
+#endif
 
 struct ConeResult {
     vec3 radiance;   // premultiplied radiance gathered front to back
@@ -112,6 +127,9 @@ ConeResult cone_march(vec3 origin, vec3 d, float h0, float rise, float maxDist, 
             break;
 
         vec4 s = cone_sampleGrid(p, d, lod);
+#if CONE_GI
+        s.rgb *= cone_facing(p, d, lod);
+#endif
         // Opacity of a step dt through a texel of edge `texel`: alpha' = 1 - (1 - alpha)^(dt / texel).
         float a = clamp(s.a, 0.0, 1.0);
         float k = dt / texel;

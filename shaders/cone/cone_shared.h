@@ -4,6 +4,7 @@
 // values of ConeSettings with the reason for each.
 #pragma once
 #include "common/shared_types.h"
+#include "voxelize/voxelize_shared.h"
 
 #ifdef __cplusplus
 #define CONE_FN inline
@@ -26,6 +27,7 @@ VCT_CONST int CONE_MAX_STEPS = 1024;
 VCT_CONST int CONE_UNIT_OPACITY = 10;   // grid.opacity (AO, iso) or grid.radiance (GI, iso)
 VCT_CONST int CONE_UNIT_ANISO = 11;     // 11..16: grid.anisoRadiance[+X, -X, +Y, -Y, +Z, -Z]
 VCT_CONST int CONE_UNIT_COLOR = 17;     // rayMarchVoxels: albedo or radiance
+VCT_CONST int CONE_UNIT_NORMAL = 18;    // GI: grid.normal (level 0), for the facing test
 VCT_CONST int CONE_IMAGE_OUTPUT = 0;    // image unit of the output texture
 VCT_CONST int CONE_UBO_BINDING = 0;
 
@@ -76,5 +78,21 @@ struct ConeUniforms {
 // |d|^2 = 1, so a uniform medium keeps its opacity (abs(d) sums to up to sqrt(3) and
 // over-brightens; BRIEF section 3). Shared so the CPU test checks the shader's function.
 CONE_FN vec3 cone_anisoWeights(vec3 d) { return d * d; }
+
+// Blends the three directional samples (premultiplied radiance, alpha) with weights w that
+// sum to 1. Opacity blends as optical depth: T = T_x^w.x T_y^w.y T_z^w.z, the transmittance
+// of a path that crosses each axis's layers in proportion to its weight. A linear blend of
+// alpha would let a wall that is opaque along its normal (alpha_x = 1 at every level, the
+// point of the directional mips) turn transparent for oblique cones as the level rises
+// (alpha -> w.x + (1 - w.x) 2^-level), so leaking would grow with the grid resolution.
+// Radiance keeps the linear blend's ratio to opacity (the blended colour of what is hit).
+CONE_FN vec4 cone_blendDirectional(vec3 w, vec4 x, vec4 y, vec4 z) {
+    vec3 alpha = clamp(vec3(x.w, y.w, z.w), vec3(0.0), vec3(1.0));
+    vec3 logT = log2(max(vec3(1.0) - alpha, vec3(1.0e-7)));
+    float a = 1.0f - exp2(dot(w, logT));
+    float aLinear = dot(w, alpha);
+    vec3 c = w.x * vec3(x) + w.y * vec3(y) + w.z * vec3(z);
+    return vec4(aLinear > 1.0e-6f ? c * (a / aLinear) : c, a);
+}
 
 VCT_END_NAMESPACE

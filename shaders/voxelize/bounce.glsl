@@ -33,6 +33,9 @@ vec3 bounce_cone(vec3 origin, vec3 dir) {
         vec3 p = origin + dir * t;
         if (any(lessThan(p, vec3(-diameter))) || any(greaterThan(p, vec3(uResolution) + diameter))) break;
         vec4 s = textureLod(uRadiance, p * invRes, level);
+        // Radiance leaves the front of a surface (vox_facingWeight), as in the pixel cones.
+        vec4 n = textureLod(uNormal, p * invRes, level);  // coverage-weighted mean normal
+        s.rgb *= vox_facingWeight(n.xyz / max(n.w, 1e-4), dir);
         float step = 0.5 * diameter;
         // Opacity corrected for the step length relative to the sample's footprint.
         float a = 1.0 - pow(max(1.0 - s.a, 0.0), step / diameter);

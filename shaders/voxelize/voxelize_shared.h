@@ -4,6 +4,12 @@
 #pragma once
 #include "common/shared_types.h"
 
+#ifdef __cplusplus
+#define VOX_FN inline
+#else
+#define VOX_FN
+#endif
+
 VCT_BEGIN_NAMESPACE
 
 // One invocation per triangle; triangles whose projection covers more than
@@ -37,5 +43,15 @@ VCT_CONST float VOX_ALBEDO_SCALE = 4095.0;
 VCT_CONST float VOX_NORMAL_SCALE = 4095.0;
 VCT_CONST float VOX_EMISSION_SCALE = 4096.0;
 VCT_CONST float VOX_EMISSION_MAX = 1.0e9;
+
+// Share of a voxel sample's radiance (premultiplied or not) that leaves towards a cone
+// travelling along unit d, given n, the mean normal of the sample's occupied voxels (the
+// filtered normal texture's xyz / a): radiance leaves a surface from its front, so voxels
+// seen from behind (dot(n, d) >= 1/2) pass none of it, though they still occlude. The mean
+// is shorter where voxels disagree (both faces of a thin wall, a corner), so mixed and
+// two-sided voxels pass their radiance. Without this an emitter or a lit wall shines
+// through its back: a bright rim on a ceiling 2 cm above a light panel once voxels are
+// finer than the gap, and a floor lit by the back of a panel facing away from it.
+VOX_FN float vox_facingWeight(vec3 n, vec3 d) { return clamp(1.0f - 2.0f * dot(n, d), 0.0f, 1.0f); }
 
 VCT_END_NAMESPACE

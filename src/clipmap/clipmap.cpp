@@ -95,10 +95,17 @@ Clipmap buildClipmap(const GpuScene& gpuScene, const Scene& scene, const Clipmap
         cm.levels[size_t(l)] = voxelizeGrid(gpuScene, makeGridLayout(layout.origin(l), layout.voxelSize(l), res),
                                             params, timer, "voxelize_l" + std::to_string(l));
     if (inject) {
+        // Bounce cones run inside one level and would take its border for the sky: clipmap
+        // levels hold direct light only. An explicit request for bounces is refused.
+        if (params.has("vct.bounces") && readVctBounces(params) > 0)
+            throw std::invalid_argument("vct.clipmap.levels: vct.bounces = " + params.values().at("vct.bounces") +
+                                        " is not supported on clipmaps (use vct.bounces=0)");
+        ParamMap levelParams = params;
+        levelParams.set("vct.bounces", "0");
         for (int l = 0; l < n; ++l) {
             std::vector<const VoxelGrid*> outer;
             for (int k = l + 1; k < n; ++k) outer.push_back(&cm.levels[size_t(k)]);
-            injectRadiance(cm.levels[size_t(l)], gpuScene, scene, sky, params, timer, outer,
+            injectRadiance(cm.levels[size_t(l)], gpuScene, scene, sky, levelParams, timer, outer,
                            "inject_l" + std::to_string(l));
         }
     }

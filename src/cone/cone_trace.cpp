@@ -60,6 +60,7 @@ GlTexture tracePass(ConeMode mode, const VoxelGrid& grid, const GBuffer& gbuffer
 
     bindGBufferTextures(gbuffer);  // the shaders texelFetch position, normal, geomNormal, albedo
     glBindTextureUnit(gpu::CONE_UNIT_OPACITY, gi ? grid.radiance.id() : grid.opacity.id());
+    if (gi) glBindTextureUnit(gpu::CONE_UNIT_NORMAL, grid.normal.id());
     if (aniso)
         for (int i = 0; i < 6; ++i) glBindTextureUnit(gpu::CONE_UNIT_ANISO + i, grid.anisoRadiance[i].id());
     glBindImageTexture(gpu::CONE_IMAGE_OUTPUT, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,

@@ -10,6 +10,7 @@
 #include "reference/reference_ao.h"
 #include "render/params.h"
 #include "render/plan.h"
+#include "voxelize/voxelize.h"
 
 namespace vct {
 
@@ -29,7 +30,7 @@ void documentAllMethodParams() {
     readConeSettings(empty);
     referenceSettingsFromParams(empty);
     referencePixelAreaFromParams(empty);
-    empty.getInt("vct.bounces", 0, 0, 8, "extra diffuse bounces traced between voxels");
+    readVctBounces(empty);
     empty.getInt("vct.view.level", 0, 0, 16, "mip level shown by voxel_* AOVs");
 }
 

@@ -151,7 +151,8 @@ void runSparseVct(const RenderPlan& plan, const RenderRequest& r, const Scene& s
                        {"dense_bytes", sv.stats.denseBytes},
                        {"voxelize_s", sv.stats.voxelizeSeconds},
                        {"inject_s", sv.stats.injectSeconds},
-                       {"levels_s", sv.stats.levelsSeconds}};
+                       {"levels_s", sv.stats.levelsSeconds},
+                       {"bounces", 0}};  // the sparse path injects direct light only
     Image alb = readTexture2D(g.albedo.id(), g.width, g.height, 4);
     std::vector<SurfacePoint> base = gbufferPoints(g);
     std::vector<SparsePoint> pts(base.size());
@@ -264,6 +265,8 @@ VoxelVolume voxelGridFor(const RenderPlan& plan, const RenderRequest& r, const S
     }
     v.stats["region"] = region.toJson();
     v.stats["clipmap_levels"] = levels;
+    // Extra bounces in the voxels: the dense grid's vct.bounces; clipmaps hold direct light only.
+    v.stats["bounces"] = inject && levels == 0 ? readVctBounces(r.params) : 0;
     return v;
 }
 

@@ -31,11 +31,32 @@ struct LevelSampler {
     const MarchParams* mp;
     std::vector<std::unique_ptr<OpacityAcc>> opacity;
     std::vector<std::unique_ptr<RadianceAcc>> radiance;  // empty for AO
+    std::vector<std::unique_ptr<RadianceAcc>> normal;    // GI only: normal levels (facing test)
 
     LevelSampler(const SparseVoxelScene& v, const MarchParams& params, bool gi) : mp(&params) {
         for (const auto& g : v.opacityLevels) opacity.push_back(std::make_unique<OpacityAcc>(g->tree()));
-        if (gi)
+        if (gi) {
             for (const auto& g : v.radianceLevels) radiance.push_back(std::make_unique<RadianceAcc>(g->tree()));
+            for (const auto& g : v.normalLevels) normal.push_back(std::make_unique<RadianceAcc>(g->tree()));
+        }
+    }
+
+    glm::vec3 sampleNormalLevel(const glm::vec3& p, int level) {
+        const glm::vec3 x = p * mp->levelScale[size_t(level)] - 0.5f;
+        const openvdb::Vec3s n =
+            openvdb::tools::BoxSampler::sample(*normal[size_t(level)], openvdb::Vec3R(x.x, x.y, x.z));
+        return glm::vec3(n[0], n[1], n[2]);
+    }
+
+    // cone_facing: vox_facingWeight of the occupied voxels' mean normal at the sample's level,
+    // the filtered normal over the filtered coverage (`coverage`: the opacity sample).
+    float facing(const glm::vec3& p, const glm::vec3& d, float lod, float coverage) {
+        lod = std::clamp(lod, 0.f, mp->maxLod);
+        const int l0 = int(std::floor(lod));
+        const float f = lod - float(l0);
+        glm::vec3 n = sampleNormalLevel(p, l0);
+        if (f > 0.f && l0 + 1 <= int(mp->maxLod)) n = glm::mix(n, sampleNormalLevel(p, l0 + 1), f);
+        return gpu::vox_facingWeight(n / std::max(coverage, 1e-4f), d);
     }
 
     // Trilinear at one level: GL texel centres (i + 0.5) / size_k, i.e. index p * size_k / res - 0.5.
@@ -88,7 +109,8 @@ ConeResult march(LevelSampler& sampler, const glm::vec3& origin, const glm::vec3
             leaving = leaving || (p[a] < -reach && d[a] <= 0.f) || (p[a] > mp.res[a] + reach && d[a] >= 0.f);
         if (leaving) break;
 
-        const glm::vec4 s = sampler.sample(p, lod);
+        glm::vec4 s = sampler.sample(p, lod);
+        if (!sampler.radiance.empty()) s = glm::vec4(glm::vec3(s) * sampler.facing(p, d, lod, s.a), s.a);
         const float a = std::clamp(s.a, 0.f, 1.f);
         const float k = dt / texel;
         const float aStep = 1.f - std::exp2(k * std::log2(std::max(1.f - a, 1e-7f)));
@@ -206,7 +228,8 @@ std::vector<glm::vec3> sparseConeGI(const SparseVoxelScene& voxels, const std::v
                                     float sky, const ConeSettings& settings) {
     checkVoxels(voxels, "sparseConeGI");
     settings.validate();
-    if (!voxels.injected() || voxels.radianceLevels.size() != voxels.opacityLevels.size())
+    if (!voxels.injected() || voxels.radianceLevels.size() != voxels.opacityLevels.size() ||
+        voxels.normalLevels.size() != voxels.opacityLevels.size())
         throw std::invalid_argument("sparseConeGI: the sparse voxels have no radiance (inject first)");
     if (!(sky >= 0.f) || !std::isfinite(sky))
         throw std::invalid_argument("sparseConeGI: sky radiance " + std::to_string(sky) + " must be finite and >= 0");

@@ -7,6 +7,7 @@
 // Opacity and premultiplied radiance average alike, so the box filter is exact. Each parent
 // sums its children in a fixed order: the levels are deterministic.
 #include "vdb/sparse_detail.h"
+#include "voxelize/voxelize.h"
 
 #include <openvdb/tools/Prune.h>
 #include <openvdb/tree/LeafManager.h>
@@ -64,38 +65,48 @@ void buildLevel(SparseVoxelScene& voxels, int level) {
             }
     }
     auto opacity = std::make_shared<openvdb::FloatTree>(topology, 0.f, 0.f, openvdb::TopologyCopy());
-    std::shared_ptr<openvdb::Vec3STree> radiance;
-    if (hasRadiance)
+    std::shared_ptr<openvdb::Vec3STree> radiance, normal;
+    if (hasRadiance) {
         radiance = std::make_shared<openvdb::Vec3STree>(topology, openvdb::Vec3s(0.f), openvdb::Vec3s(0.f),
                                                         openvdb::TopologyCopy());
+        normal = std::make_shared<openvdb::Vec3STree>(topology, openvdb::Vec3s(0.f), openvdb::Vec3s(0.f),
+                                                      openvdb::TopologyCopy());
+    }
     openvdb::tree::LeafManager<openvdb::FloatTree> opacityLeaves(*opacity);
-    std::unique_ptr<openvdb::tree::LeafManager<openvdb::Vec3STree>> radianceLeaves;
-    if (hasRadiance) radianceLeaves = std::make_unique<openvdb::tree::LeafManager<openvdb::Vec3STree>>(*radiance);
+    std::unique_ptr<openvdb::tree::LeafManager<openvdb::Vec3STree>> radianceLeaves, normalLeaves;
+    if (hasRadiance) {
+        radianceLeaves = std::make_unique<openvdb::tree::LeafManager<openvdb::Vec3STree>>(*radiance);
+        normalLeaves = std::make_unique<openvdb::tree::LeafManager<openvdb::Vec3STree>>(*normal);
+    }
     const openvdb::Vec3STree* childRadiance =
         hasRadiance ? &voxels.radianceLevels[size_t(level - 1)]->tree() : nullptr;
+    const openvdb::Vec3STree* childNormal = hasRadiance ? &voxels.normalLevels[size_t(level - 1)]->tree() : nullptr;
 
     tbb::parallel_for(tbb::blocked_range<size_t>(0, opacityLeaves.leafCount()), [&](const tbb::blocked_range<size_t>& r) {
         ConstAcc<openvdb::FloatTree> opAcc(childOpacity);
-        std::unique_ptr<ConstAcc<openvdb::Vec3STree>> radAcc;
+        std::unique_ptr<ConstAcc<openvdb::Vec3STree>> radAcc, norAcc;
         if (childRadiance) radAcc = std::make_unique<ConstAcc<openvdb::Vec3STree>>(*childRadiance);
+        if (childNormal) norAcc = std::make_unique<ConstAcc<openvdb::Vec3STree>>(*childNormal);
         for (size_t li = r.begin(); li != r.end(); ++li) {
             auto& opLeaf = opacityLeaves.leaf(li);
             for (auto it = opLeaf.beginValueOn(); it; ++it) {
                 openvdb::Coord lo, hi;
                 childRange(it.getCoord(), src, dst, lo, hi);
                 float a = 0.f;
-                openvdb::Vec3s c(0.f);
+                openvdb::Vec3s c(0.f), nsum(0.f);
                 for (int z = lo.z(); z <= hi.z(); ++z)
                     for (int y = lo.y(); y <= hi.y(); ++y)
                         for (int x = lo.x(); x <= hi.x(); ++x) {
                             const openvdb::Coord ijk(x, y, z);
                             a += opAcc.getValue(ijk);
                             if (radAcc) c += radAcc->getValue(ijk);
+                            if (norAcc) nsum += norAcc->getValue(ijk);
                         }
                 const openvdb::Coord n = hi - lo + openvdb::Coord(1);
                 const float inv = 1.f / float(n.x() * n.y() * n.z());
                 it.setValue(a * inv);
                 if (radianceLeaves) radianceLeaves->leaf(li).setValueOnly(it.pos(), c * inv);
+                if (normalLeaves) normalLeaves->leaf(li).setValueOnly(it.pos(), nsum * inv);
             }
         }
     });
@@ -110,6 +121,10 @@ void buildLevel(SparseVoxelScene& voxels, int level) {
         radianceGrid->setName("radiance_L" + std::to_string(level));
         radianceGrid->setTransform(levelTransform(voxels, level));
         voxels.radianceLevels.push_back(radianceGrid);
+        auto normalGrid = openvdb::Vec3SGrid::create(normal);
+        normalGrid->setName("normal_L" + std::to_string(level));
+        normalGrid->setTransform(levelTransform(voxels, level));
+        voxels.normalLevels.push_back(normalGrid);
     }
 }
 
@@ -122,6 +137,8 @@ void buildSparseLevels(SparseVoxelScene& voxels) {
     const auto t0 = std::chrono::steady_clock::now();
     voxels.opacityLevels.resize(1);
     if (voxels.injected()) voxels.radianceLevels.resize(1);
+    voxels.normalLevels.clear();
+    if (voxels.injected()) voxels.normalLevels = {voxels.normal};
     for (int level = 1; level < voxels.levels; ++level) buildLevel(voxels, level);
     voxels.stats.levelsSeconds = secondsSince(t0);
     updateSparseMemoryStats(voxels);
@@ -134,6 +151,7 @@ void updateSparseMemoryStats(SparseVoxelScene& voxels) {
     s.memoryBytes = 0;
     for (const auto& g : voxels.opacityLevels) s.memoryBytes += size_t(g->memUsage());
     for (const auto& g : voxels.radianceLevels) s.memoryBytes += size_t(g->memUsage());
+    for (size_t k = 1; k < voxels.normalLevels.size(); ++k) s.memoryBytes += size_t(voxels.normalLevels[k]->memUsage());
     for (const auto* g : {&voxels.albedo, &voxels.normal, &voxels.emission})
         if (*g) s.memoryBytes += size_t((*g)->memUsage());
     // Dense equivalent of the same channels in float32: per level, opacity (4 B) and radiance
@@ -141,7 +159,8 @@ void updateSparseMemoryStats(SparseVoxelScene& voxels) {
     const int maxRes = std::max(voxels.resolution.x, std::max(voxels.resolution.y, voxels.resolution.z));
     s.denseBytes = s.denseCubeBytes = 0;
     for (int level = 0; level < int(voxels.opacityLevels.size()); ++level) {
-        size_t perVoxel = 4 + (level < int(voxels.radianceLevels.size()) ? 12 : 0);
+        size_t perVoxel = 4 + (level < int(voxels.radianceLevels.size()) ? 12 : 0) +
+                          (level > 0 && level < int(voxels.normalLevels.size()) ? 12 : 0);
         if (level == 0) perVoxel += (voxels.albedo ? 12 : 0) + (voxels.normal ? 12 : 0) + (voxels.emission ? 12 : 0);
         s.denseBytes += product(voxels.levelSize(level)) * perVoxel;
         s.denseCubeBytes += product(glm::ivec3(std::max(maxRes >> level, 1))) * perVoxel;
@@ -154,7 +173,9 @@ SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject
         throw std::invalid_argument("buildSparseVoxels: sky radiance must be finite and >= 0");
     const float offset = params.getFloat("vct.inject.offset", 2.f, 0.f, 16.f,
                                          "voxels along the normal where shadow rays of injection start");
-    const int bounces = params.getInt("vct.bounces", 0, 0, 8, "extra diffuse bounces traced between voxels");
+    // Direct light only: an explicit request for bounces is refused, the default is not.
+    const int requestedBounces = readVctBounces(params);
+    const int bounces = params.has("vct.bounces") ? requestedBounces : 0;
     params.getBool("vct.bounce.sky", true, "bounce cones that escape see the sky radiance");
     params.getChoice("vct.voxel.precision", "auto", {"auto", "half", "float"},
                      "storage of emission/radiance: half (RGBA16F, clamps at 65504), float (RGBA32F), "

@@ -56,6 +56,9 @@ struct SparseVoxelScene {
     openvdb::Vec3SGrid::Ptr radiance;   // level 0, premultiplied; null unless injected
     std::vector<openvdb::FloatGrid::Ptr> opacityLevels;    // [0, levels)
     std::vector<openvdb::Vec3SGrid::Ptr> radianceLevels;   // [0, levels) when injected, else empty
+    // [0, levels) when injected: mean of the children's normals (inactive = 0), so divided by
+    // the opacity level it is the occupied voxels' mean normal (GPU: the normal mips).
+    std::vector<openvdb::Vec3SGrid::Ptr> normalLevels;
 
     SparseVoxelStats stats;
 

@@ -43,6 +43,7 @@ void writeVdb(const SparseVoxelScene& voxels, const std::string& path, const std
     if (voxels.radiance) add(voxels.radiance, 0);
     for (size_t k = 1; k < voxels.opacityLevels.size(); ++k) add(voxels.opacityLevels[k], int(k));
     for (size_t k = 1; k < voxels.radianceLevels.size(); ++k) add(voxels.radianceLevels[k], int(k));
+    for (size_t k = 1; k < voxels.normalLevels.size(); ++k) add(voxels.normalLevels[k], int(k));
 
     openvdb::MetaMap meta;
     meta.insertMeta("scene", openvdb::StringMetadata(sceneName));
@@ -104,11 +105,13 @@ SparseVoxelScene readVdb(const std::string& path) {
     if (file.hasGrid("radiance")) v.radiance = readTyped<openvdb::Vec3SGrid>(file, "radiance", path);
     v.opacityLevels = {v.opacity};
     if (v.radiance) v.radianceLevels = {v.radiance};
+    if (v.radiance) v.normalLevels = {v.normal};
     for (int k = 1; k < v.levels; ++k) {
         const std::string suffix = "_L" + std::to_string(k);
         if (!file.hasGrid("opacity" + suffix)) break;  // a file written before its levels were built
         v.opacityLevels.push_back(readTyped<openvdb::FloatGrid>(file, "opacity" + suffix, path));
         if (v.radiance) v.radianceLevels.push_back(readTyped<openvdb::Vec3SGrid>(file, "radiance" + suffix, path));
+        if (v.radiance) v.normalLevels.push_back(readTyped<openvdb::Vec3SGrid>(file, "normal" + suffix, path));
     }
     file.close();
     updateSparseMemoryStats(v);

@@ -10,6 +10,12 @@
 
 namespace vct {
 
+int readVctBounces(const ParamMap& params) {
+    return params.getInt("vct.bounces", kDefaultVctBounces, 0, 8,
+                         "extra diffuse bounces traced between voxels (dense grid only; the vdb backend and "
+                         "clipmaps inject direct light only)");
+}
+
 namespace {
 
 constexpr float HALF_SAFE_MAX = 30000.f;
@@ -46,7 +52,7 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
             !std::isfinite(l.position.x + l.position.y + l.position.z) ||
             !std::isfinite(l.direction.x + l.direction.y + l.direction.z))
             throw std::invalid_argument("injectRadiance: light '" + l.name + "' has a non-finite value");
-    const int bounces = params.getInt("vct.bounces", 0, 0, 8, "extra diffuse bounces traced between voxels");
+    const int bounces = readVctBounces(params);
     const float offset = params.getFloat("vct.inject.offset", 2.f, 0.f, 16.f,
                                          "voxels along the normal where shadow rays of injection start");
     const bool bounceSky = params.getBool("vct.bounce.sky", true, "bounce cones that escape see the sky radiance");

@@ -21,17 +21,23 @@ void dispatchGrid(const glm::ivec3& size) {
 
 }  // namespace
 
+// GI grids filter their normals too: the facing test (vox_facingWeight) reads them at every
+// level the cones sample.
+bool filtersNormals(const VoxelGrid& grid) { return grid.radiance && grid.normal && textureLevelCount(grid.normal) >= grid.levels; }
+
 GlProgram buildIsotropicMipProgram(const VoxelGrid& grid) {
     ShaderDefines defines;
     if (grid.radiance)
         defines = {{"HAS_RADIANCE", "1"},
                    {"RADIANCE_FORMAT", glslImageFormat(textureInternalFormat(grid.radiance.id()))}};
+    if (filtersNormals(grid)) defines.push_back({"HAS_NORMAL", "1"});
     return buildComputeProgram("voxelize/mip_iso.glsl", defines);
 }
 
 void buildIsotropicMips(VoxelGrid& grid, const GlProgram& program) {
     const bool hasRadiance = bool(grid.radiance);
     const GLenum radianceFormat = hasRadiance ? textureInternalFormat(grid.radiance.id()) : GL_RGBA16F;
+    const bool hasNormal = filtersNormals(grid);
     glUseProgram(program.id());
     for (int level = 1; level < grid.levels; ++level) {
         glm::ivec3 src = levelSize(grid.resolution, level - 1), dst = levelSize(grid.resolution, level);
@@ -42,6 +48,10 @@ void buildIsotropicMips(VoxelGrid& grid, const GlProgram& program) {
         if (hasRadiance) {
             bindImage3D(2, grid.radiance.id(), level - 1, GL_READ_ONLY, radianceFormat);
             bindImage3D(3, grid.radiance.id(), level, GL_WRITE_ONLY, radianceFormat);
+        }
+        if (hasNormal) {
+            bindImage3D(4, grid.normal.id(), level - 1, GL_READ_ONLY, GL_RGBA16F);
+            bindImage3D(5, grid.normal.id(), level, GL_WRITE_ONLY, GL_RGBA16F);
         }
         dispatchGrid(dst);
     }
@@ -118,7 +128,7 @@ void buildMips(VoxelGrid& grid, bool anisotropic, PassTimer& timer, const std::s
         for (GlTexture& t : grid.anisoRadiance) t.reset();
         grid.anisotropic = false;
     }
-    for (GLuint u = 0; u < 4; ++u) glBindImageTexture(u, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    for (GLuint u = 0; u < 6; ++u) glBindImageTexture(u, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
     grid.memoryBytes = voxelGridMemoryBytes(grid);
 }
 

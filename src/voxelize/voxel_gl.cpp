@@ -2,6 +2,7 @@
 
 #include "voxelize/voxelize.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace vct {
@@ -17,6 +18,13 @@ void setUniform(GLuint program, const char* name, const glm::ivec3& v) {
 }
 void setUniform(GLuint program, const char* name, const glm::vec3& v) {
     glProgramUniform3f(program, glGetUniformLocation(program, name), v.x, v.y, v.z);
+}
+
+int textureLevelCount(const GlTexture& t) {
+    if (!t) return 0;
+    GLint levels = 0;
+    glGetTextureParameteriv(t.id(), GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
+    return std::max(1, int(levels));
 }
 
 GLenum textureInternalFormat(GLuint texture) {
@@ -54,10 +62,9 @@ size_t bytesPerTexel(GLenum f) {
 
 size_t textureBytes(const GlTexture& t) {
     if (!t) return 0;
-    GLint levels = 0;
-    glGetTextureParameteriv(t.id(), GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
+    const int levels = textureLevelCount(t);
     size_t texel = bytesPerTexel(textureInternalFormat(t.id())), total = 0;
-    for (int l = 0; l < std::max(1, levels); ++l) {
+    for (int l = 0; l < levels; ++l) {
         GLint w = 0, h = 0, d = 0;
         glGetTextureLevelParameteriv(t.id(), l, GL_TEXTURE_WIDTH, &w);
         glGetTextureLevelParameteriv(t.id(), l, GL_TEXTURE_HEIGHT, &h);

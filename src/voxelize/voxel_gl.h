@@ -21,6 +21,8 @@ void setUniform(GLuint program, const char* name, const glm::vec3& v);
 
 // Internal format of level 0 of a texture.
 GLenum textureInternalFormat(GLuint texture);
+// Mip levels of an immutable texture (1 for a single level, 0 for no texture).
+int textureLevelCount(const GlTexture& t);
 // The GLSL image format qualifier of an internal format ("rgba16f", ...).
 std::string glslImageFormat(GLenum internalFormat);
 // Largest finite value storable in the format ("65504.0" for half floats).

@@ -127,7 +127,8 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     // Resolve into the contract's float textures.
     grid.opacity = createTexture3D(GL_R16F, res.x, res.y, res.z, grid.levels);
     grid.albedo = createTexture3D(GL_RGBA16F, res.x, res.y, res.z);
-    grid.normal = createTexture3D(GL_RGBA16F, res.x, res.y, res.z);
+    // Normals carry mips (filled with the radiance's: voxelize/mips.cpp) for the facing test.
+    grid.normal = createTexture3D(GL_RGBA16F, res.x, res.y, res.z, grid.levels);
     grid.emission = createTexture3D(emissionFormat, res.x, res.y, res.z);
     for (int i = 0; i < accumulatorCount; ++i) bindImage3D(GLuint(i), acc[size_t(i)].id(), 0, GL_READ_ONLY, GL_R32UI);
     bindImage3D(13, grid.opacity.id(), 0, GL_WRITE_ONLY, GL_R16F);

@@ -11,7 +11,8 @@
 //                        "half" is RGBA16F (contract default; values clamp at 65504),
 //                        "float" RGBA32F; "auto" picks float when the scene's emission or
 //                        lights could exceed the half range (e.g. emission 1e6). Default auto.
-//   vct.bounces          0..8, default 0: extra diffuse bounces traced voxel to voxel.
+//   vct.bounces          0..8, default 1 (kDefaultVctBounces): extra diffuse bounces traced
+//                        voxel to voxel.
 //   vct.inject.offset    0..16 voxels, default 2: shadow rays start this far along the normal.
 //   vct.bounce.sky       0|1, default 1: bounce cones that escape see the sky radiance `sky`.
 #pragma once
@@ -25,6 +26,15 @@
 #include <vector>
 
 namespace vct {
+
+// Default of vct.bounces. One extra bounce: the reference's paths carry several, and with
+// direct light alone in the voxels the Cornell box's indirect light is 37% too dark (with
+// one bounce -7%, bias -0.025 against 4 path-traced bounces; docs in README, VCT section).
+// It costs a second gather per voxel (the inject pass grows about 5x).
+constexpr int kDefaultVctBounces = 1;
+
+// Reads vct.bounces (range 0..8, default kDefaultVctBounces) with its --help-params line.
+int readVctBounces(const ParamMap& params);
 
 // Conservative voxelization of every triangle overlapping `region` (Akenine-Moller SAT per
 // candidate voxel; no holes for thin, sub-voxel or axis-aligned triangles). Averages are

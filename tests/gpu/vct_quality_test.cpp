@@ -9,6 +9,8 @@
 #include "scene/camera.h"
 #include "scene/gltf_loader.h"
 #include "support/run_vct.h"
+#include "support/test_scenes.h"
+#include "voxelize/voxelize.h"
 
 #include <gtest/gtest.h>
 
@@ -69,6 +71,7 @@ struct CornellRenders {
     std::unique_ptr<RenderSession> session;
     Image mask, position;
     Image reference, referenceStderr;       // --gi reference indirect, its per-pixel stderr
+    Image referenceMatched;                 // the same with reference.bounces = 3 (VCT's default depth)
     std::map<int, Image> vct;               // voxelRes -> --gi vct indirect
 };
 
@@ -89,6 +92,11 @@ CornellRenders& cornell() {
     c->referenceStderr = ref.aovs.at("indirect_stderr");
     c->mask = surfaceMask(ref.aovs.at("depth"));
     c->position = ref.aovs.at("position");
+    // vct.bounces = 1 (the default) carries light over at most three reflections: direct into
+    // the voxels, one voxel bounce, the gather at the pixel; reference.bounces counts them too.
+    r.params.set("reference.bounces", std::to_string(kDefaultVctBounces + 2));
+    c->referenceMatched = renderChecked(*c->session, r, "reference_gi").aovs.at("indirect");
+    r.params = ParamMap();
     r.gi = "vct";
     r.aovs = {"indirect"};
     for (int res : {32, 64, 128}) {
@@ -129,10 +137,11 @@ TEST(VctQuality, AoErrorFallsWithVoxelResolution) {
     EXPECT_LT(err[128].rmse, err[64].rmse);
 }
 
-// Doubling the resolution changes the mean indirect radiance by less than 10% (injection is
-// normalized by voxel footprint: BRIEF section 3). Measured (64 px, default cones): 0.2655,
-// 0.2826, 0.3199 at 32, 64, 128: +6.4% then +13.2%. Issue 6 asks for 10% on both steps; the
-// 64 -> 128 step is held to 15% until the drift is fixed (reported to the lead).
+// Doubling the resolution changes the mean indirect radiance by less than 10% (issue 6;
+// injection is normalized by voxel footprint: BRIEF section 3). Measured (64 px, defaults):
+// 0.3721, 0.3905, 0.4063 at 32, 64, 128: +4.9% then +4.0%. Two fixes brought the second step
+// down from +13.2%: directional opacity blended as optical depth (cone_blendDirectional), and
+// radiance seen from behind passing nothing (vox_facingWeight).
 TEST(VctQuality, IndirectEnergyIndependentOfResolution) {
     CornellRenders& c = cornell();
     std::map<int, double> mean;
@@ -142,15 +151,17 @@ TEST(VctQuality, IndirectEnergyIndependentOfResolution) {
     }
     EXPECT_GT(mean[32], 0.0);
     EXPECT_LT(std::abs(mean[64] / mean[32] - 1.0), 0.10) << "32 -> 64";
-    EXPECT_LT(std::abs(mean[128] / mean[64] - 1.0), 0.15) << "64 -> 128 (issue 6's goal: 0.10)";
+    EXPECT_LT(std::abs(mean[128] / mean[64] - 1.0), 0.10) << "64 -> 128";
 }
 
-// The Cornell box's indirect light against --gi reference (256 spp, 64 px). Tolerances come
-// from measurement: VCT is darker than the reference, mean -36.9% at 64^3 and -28.6% at 128^3,
-// RMSE 50% and 73% of the reference mean (128^3: bright rims around the ceiling light).
-// Stated tolerance: mean within 45%, RMSE below 85% of the reference mean, and the mean's
-// error shrinks from 64^3 to 128^3. Loose on purpose: it catches a black or 2x-bright result,
-// not the known darkening (reported to the lead).
+// The Cornell box's indirect light against --gi reference (256 spp, 64 px) with VCT's
+// defaults (one extra bounce in the voxels). Light from the emissive panel is indirect in
+// both (BRIEF section 1). Measured at 64^3 / 128^3: against the 4-bounce reference, mean
+// -15.9% / -12.5%, RMSE 29% / 28% of the reference mean (its own per-pixel noise: 6.5%);
+// against the bounce-matched reference (reference.bounces = 3), mean -9.1% / -5.4%. The rest
+// is the light of the fourth and later reflections. Stated tolerance: mean within 20% of the
+// 4-bounce and 12% of the matched reference, RMSE below 35% of the reference mean, and the
+// mean's error shrinks from 64^3 to 128^3.
 TEST(VctQuality, CornellIndirectNearReference) {
     CornellRenders& c = cornell();
     const double refMean = imageMean(c.reference, &c.mask);
@@ -164,22 +175,26 @@ TEST(VctQuality, CornellIndirectNearReference) {
                     "(%.1f%% of ref mean) mae %.4f ref stderr %.4f\n",
                     res, mean, refMean, 100.0 * (mean / refMean - 1.0), e.rmse, 100.0 * e.rmse / refMean, e.mae,
                     refNoise);
-        // Without the ceiling (y < 1.9 m): the rims around the light are excluded.
-        Image lower = c.mask;
-        for (size_t i = 0; i < lower.pixels.size(); ++i)
-            if (c.position.pixels[3 * i + 1] > 1.9f) lower.pixels[i] = 0.f;
-        const ErrorMetrics eLower = computeErrorMetrics(img, c.reference, &lower, -1, 1.0);
-        std::printf("[vct quality]   without the ceiling: rmse %.4f bias %+.4f\n", eLower.rmse, eLower.bias);
+        const double matchedMean = imageMean(c.referenceMatched, &c.mask);
+        const ErrorMetrics em = computeErrorMetrics(img, c.referenceMatched, &c.mask, -1, 1.0);
+        std::printf("[vct quality]   against reference.bounces = %d: mean %.4f (rel %+.1f%%) rmse %.4f\n",
+                    kDefaultVctBounces + 2, matchedMean, 100.0 * (mean / matchedMean - 1.0), em.rmse);
+        if (res >= 64) {
+            EXPECT_LT(std::abs(mean / matchedMean - 1.0), 0.12) << "voxelRes " << res << " (matched)";
+        }
         relError[res] = std::abs(mean / refMean - 1.0);
         if (res < 64) continue;  // 32^3 is a coarse preview: printed, not held to the tolerance
-        EXPECT_LT(relError[res], 0.45) << "voxelRes " << res;
-        EXPECT_LT(e.rmse / refMean, 0.85) << "voxelRes " << res;
+        EXPECT_LT(relError[res], 0.20) << "voxelRes " << res;
+        EXPECT_LT(e.rmse / refMean, 0.35) << "voxelRes " << res;
     }
     EXPECT_LT(relError[128], relError[64]) << "the mean indirect does not approach the reference as the grid refines";
 }
 
 // Colour bleeding: on the floor near the red wall (x < -0.5) the indirect light is redder
-// (higher r/g) than near the green wall (x > 0.5), in VCT as in the reference.
+// (higher r/g) than near the green wall (x > 0.5), in VCT as in the reference, and the
+// contrast log(r/g near red / r/g near green) is at least half the reference's. Measured:
+// reference 1.499 / 0.882; VCT 1.317 / 0.843 at 64^3 (84% of the reference's contrast),
+// 1.279 / 0.861 at 128^3 (75%).
 TEST(VctQuality, WallsBleedColourOntoTheFloor) {
     CornellRenders& c = cornell();
     auto ratio = [](glm::dvec3 v) { return v.x / std::max(v.y, 1e-9); };
@@ -190,9 +205,76 @@ TEST(VctQuality, WallsBleedColourOntoTheFloor) {
     for (const auto& [res, img] : c.vct) {
         const double red = ratio(floorMean(img, c.position, -1));
         const double green = ratio(floorMean(img, c.position, +1));
-        std::printf("[vct quality] cornell_box floor r/g vct %3d: near red %.3f near green %.3f\n", res, red, green);
-        EXPECT_GT(red, green) << "voxelRes " << res;
+        const double contrast = std::log(red / green), refContrast = std::log(refRed / refGreen);
+        std::printf("[vct quality] cornell_box floor r/g vct %3d: near red %.3f near green %.3f (contrast %.0f%% of "
+                    "the reference's)\n",
+                    res, red, green, 100.0 * contrast / refContrast);
+        EXPECT_GT(red, 1.0) << "voxelRes " << res << ": no red near the red wall";
+        EXPECT_LT(green, 1.0) << "voxelRes " << res << ": no green near the green wall";
+        EXPECT_GT(contrast, 0.5 * refContrast) << "voxelRes " << res;
     }
+}
+
+// An emissive panel (Le, albedo 0) three voxels above a floor (albedo 0.5), no lights, no sky,
+// seen from a camera in the gap. Facing the floor, the panel lights it (the reference gives
+// albedo * Le * F with F the view factor); facing away, the floor sees only the panel's back,
+// which emits nothing (the reference gives 0). VCT follows both: radiance leaves voxels from
+// their fronts (vox_facingWeight of the filtered normals at every level). Measured (48 px, 64^3), in units of albedo * Le: facing
+// the floor VCT 1.000 / reference 0.931; facing away VCT 0.000 / reference 0 (0.26 before).
+TEST(VctQuality, EmitterSeenFromBehindPassesNoLight) {
+    const float Le = 4.f, albedo = 0.5f;
+    const float voxel = 4.f / 62.f, h = 3.f * voxel;  // 64 voxels over the 4 m floor, padded by one
+    auto floorUnderPanel = [&](bool facingFloor, const std::string& gi) {
+        Scene s;
+        const uint32_t floorMat = vcttest::addMaterial(s, glm::vec3(albedo));
+        const uint32_t lamp = vcttest::addMaterial(s, glm::vec3(0.f), glm::vec3(Le));
+        s.materials[lamp].doubleSided = false;  // emits from its front only (glTF culls the back)
+        vcttest::addQuad(s, {-2, 0, -2}, {0, 0, 4}, {4, 0, 0}, floorMat);
+        if (facingFloor)
+            vcttest::addQuad(s, {-1, h, -1}, {2, 0, 0}, {0, 0, 2}, lamp);  // normal -y
+        else
+            vcttest::addQuad(s, {-1, h, -1}, {0, 0, 2}, {2, 0, 0}, lamp);  // normal +y
+        vcttest::finish(s);
+        RenderSession session(s);
+        RenderRequest r;
+        r.width = r.height = 48;
+        CameraRequest cam;
+        cam.hasEye = true;
+        cam.eye = glm::vec3(1.4f, 0.5f * h, 1.4f);
+        cam.target = glm::vec3(0.f, 0.f, 0.f);
+        cam.fovDeg = 60.f;
+        r.camera = resolveCamera(s, cam, 1.f);
+        r.gi = gi;
+        r.sky = 0.f;
+        r.spp = 64;
+        r.voxelRes = 64;
+        r.aovs = {"indirect", "position", "depth"};
+        RenderResult out = renderChecked(session, r, "emitter behind");
+        const Image& ind = out.aovs.at("indirect");
+        const Image& pos = out.aovs.at("position");
+        const Image& depth = out.aovs.at("depth");
+        double sum = 0.0;
+        size_t n = 0;
+        for (int y = 0; y < pos.height; ++y)
+            for (int x = 0; x < pos.width; ++x) {
+                const glm::vec3 p(pos.at(x, y, 0), pos.at(x, y, 1), pos.at(x, y, 2));
+                if (!(depth.at(x, y, 0) > 0.f)) continue;  // sky
+                if (std::abs(p.y) > 1e-3f || std::abs(p.x) > 0.7f || std::abs(p.z) > 0.7f) continue;
+                sum += ind.at(x, y, 0);
+                ++n;
+            }
+        EXPECT_GT(n, 30u) << "too few floor pixels under the panel";
+        return n ? float(sum / double(n)) / (albedo * Le) : 0.f;
+    };
+    const float front = floorUnderPanel(true, "vct"), frontRef = floorUnderPanel(true, "reference");
+    const float back = floorUnderPanel(false, "vct"), backRef = floorUnderPanel(false, "reference");
+    std::printf("[vct quality] floor under a panel, / (albedo Le): facing the floor vct %.3f ref %.3f; facing away "
+                "vct %.4f ref %.4f\n",
+                front, frontRef, back, backRef);
+    EXPECT_GT(frontRef, 0.6f);
+    EXPECT_LT(backRef, 0.01f);
+    EXPECT_NEAR(front, frontRef, 0.15f * frontRef);
+    EXPECT_LT(back, 0.05f);
 }
 
 // Two fresh sessions (two voxelizations, injections and cone passes) give bit-identical AO,

@@ -60,6 +60,7 @@ struct Fixture {
         GlContext& gl = GlContext::shared();
         gpu = uploadScene(scene);
         params.set("vct.aniso", "0");
+        params.set("vct.bounces", "0");  // the sparse path injects direct light only
         grid = voxelizeScene(gpu, scene.bounds, res, params, timer);
         injectRadiance(grid, gpu, scene, sky, params, timer);
         buildMips(grid, false, timer);

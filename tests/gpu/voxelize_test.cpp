@@ -185,6 +185,14 @@ HoleReport compareWithCpu(const Scene& s, const VoxelGrid& g) {
     return r;
 }
 
+// Direct light and emission only (vct.bounces = 0): the injection tests compare with closed
+// forms of what lights and emitters put into a voxel, before any bounce between voxels.
+ParamMap directOnly() {
+    ParamMap p;
+    p.set("vct.bounces", "0");
+    return p;
+}
+
 VoxelGrid voxelize(const Scene& scene, const GpuScene& gpu, int res, const Bounds3* region = nullptr,
                    const ParamMap& params = ParamMap()) {
     PassTimer timer;
@@ -336,7 +344,7 @@ TEST(Voxelize, EmissionUpToMillionStaysFinite) {
     GpuScene gpu = upload(t.scene);
     VoxelGrid g = voxelize(t.scene, gpu, 16);
     PassTimer timer;
-    injectRadiance(g, gpu, t.scene, 0.f, ParamMap(), timer);
+    injectRadiance(g, gpu, t.scene, 0.f, directOnly(), timer);
     GlContext::shared().checkErrors("inject");
     Volume e = readVolume(g.emission, 0, 4), r = readVolume(g.radiance, 0, 4);
     int n = 0;
@@ -396,7 +404,7 @@ FloorResult injectFloor(const FloorScene& f, int res) {
     GpuScene gpu = upload(f.t.scene);
     VoxelGrid g = voxelize(f.t.scene, gpu, res);
     PassTimer timer;
-    injectRadiance(g, gpu, f.t.scene, 0.f, ParamMap(), timer);
+    injectRadiance(g, gpu, f.t.scene, 0.f, directOnly(), timer);
     GlContext::shared().checkErrors("inject");
     Volume r = readVolume(g.radiance, 0, 4);
     const double expected = f.rho / PI * f.lux * double(-f.lightDir.y);
@@ -464,7 +472,7 @@ TEST(Inject, SpotLightFollowsInverseSquareAndGltfFalloff) {
     GpuScene gpu = upload(t.scene);
     VoxelGrid g = voxelize(t.scene, gpu, 32);
     PassTimer timer;
-    injectRadiance(g, gpu, t.scene, 0.f, ParamMap(), timer);
+    injectRadiance(g, gpu, t.scene, 0.f, directOnly(), timer);
     GlContext::shared().checkErrors("inject spot");
     Volume r = readVolume(g.radiance, 0, 4);
     int inner = 0, falloff = 0, outside = 0;
@@ -567,7 +575,7 @@ TEST(Mips, SolidBlockIsOpaqueEmptyIsZeroAndMeansArePreserved) {
     t.scene.lights.push_back(l);
     GpuScene lit = upload(t.scene);
     VoxelGrid g2 = voxelize(t.scene, lit, 32, &region);
-    injectRadiance(g2, lit, t.scene, 0.f, ParamMap(), timer);
+    injectRadiance(g2, lit, t.scene, 0.f, directOnly(), timer);
     buildMips(g2, true, timer);
     GlContext::shared().checkErrors("mips with radiance");
     Volume r0 = readVolume(g2.radiance, 0, 4);
