@@ -4,6 +4,7 @@
 // number of trilinear fetches. Prints tables and the GL renderer string.
 //
 //   bench_vct [--size N] [--voxel-res N] [--spp N] [--runs N] [--scene cornell|sponza]...
+//             [--param KEY=VALUE]...   (vct.* parameters of the VCT render, as vct render)
 //
 // Scenes: scenes/cornell_box.gltf (its camera, R = 0.5) and, when present,
 // $VCT_SHARED_SCENES/mcguire_sponza.glb (or ../shared/scenes), which has no lights or
@@ -18,6 +19,7 @@
 // the per-pixel counts are those of the real pass, including early exits. The bare shader
 // (shaders/bench/fetch.glsl) then does exactly that many textureLod calls per pixel on a
 // 128^3 RGBA16F mipmapped texture (GL_LINEAR_MIPMAP_LINEAR, as the grid).
+#include "cone/cone_bounce.h"
 #include "cone/cone_gpu.h"
 #include "cone/cone_set.h"
 #include "cone/cone_settings.h"
@@ -54,6 +56,7 @@ struct Options {
     int spp = 64;
     int runs = 3;
     std::vector<std::string> scenes;
+    ParamMap params;  // --param KEY=VALUE for the VCT render and the counted passes
 };
 
 struct BenchScene {
@@ -132,35 +135,16 @@ struct CountedPass {
     size_t surfacePixels = 0;
 };
 
-CountedPass countConeFetches(bool gi, const VoxelGrid& grid, const GBuffer& gbuffer, float radius, float sky) {
-    const ConeSettings settings = readConeSettings(ParamMap{});
-    const bool aniso = settings.anisotropic && grid.anisotropic && grid.levels >= 2;
-    // The uniforms of src/cone/cone_trace.cpp (tracePass).
-    gpu::ConeUniforms u{};
-    conedetail::setGridUniforms(u, grid);
-    const float halfAperture = 0.5f * settings.apertureDeg * float(M_PI) / 180.f;
+CountedPass countConeFetches(bool gi, const VoxelGrid& grid, const GBuffer& gbuffer, float radius, float sky,
+                             const ParamMap& params) {
+    // The renderer's own binding of the pass (src/cone/cone_trace.cpp), so the copy matches it.
     const float diagonal = glm::length(glm::vec3(grid.resolution)) * grid.voxelSize;
-    const float maxDist = (gi ? 2.f * diagonal : radius) / grid.voxelSize;
-    u.march = glm::vec4(std::tan(halfAperture), settings.stepFactor, settings.offsetVoxels, settings.maxAlpha);
-    const float falloff = (!gi && settings.aoMapping == ConeAoMapping::Falloff && maxDist > 0.f)
-                              ? gpu::CONE_FALLOFF_LAMBDA_R / maxDist
-                              : 0.f;
-    u.limits = glm::vec4(maxDist, sky, falloff, settings.planeLimit ? gpu::CONE_PLANE_LIMIT_RATIO : 0.f);
-    const std::vector<glm::vec4> cones = diffuseConeSet(settings.coneCount);
-    u.config = glm::ivec4(int(cones.size()), gi ? gpu::CONE_AO_LINEAR : int(settings.aoMapping), 0, 0);
-    u.image = glm::ivec4(gbuffer.width, gbuffer.height, 0, 0);
-    for (size_t i = 0; i < cones.size(); ++i) u.cones[i] = cones[i];
-
-    GlProgram program = buildComputeProgram("bench/cone_count.glsl",
-                                            {{"CONE_GI", gi ? "1" : "0"}, {"CONE_ANISO", aniso ? "1" : "0"}});
+    conedetail::BoundConePass bound =
+        conedetail::bindConePass(gi, grid, gbuffer, gi ? 2.f * diagonal : radius, sky, readConeSettings(params));
+    GlProgram program = buildComputeProgram("bench/cone_count.glsl", bound.defines);
     CountedPass out;
     GlTexture value = createTexture2D(GL_RGBA32F, gbuffer.width, gbuffer.height);
     out.counts = createTexture2D(GL_R32UI, gbuffer.width, gbuffer.height);
-    GlBuffer ubo = conedetail::bindConeUniforms(u);
-    bindGBufferTextures(gbuffer);
-    glBindTextureUnit(gpu::CONE_UNIT_OPACITY, gi ? grid.radiance.id() : grid.opacity.id());
-    if (aniso)
-        for (int i = 0; i < 6; ++i) glBindTextureUnit(gpu::CONE_UNIT_ANISO + i, grid.anisoRadiance[i].id());
     glBindImageTexture(0, value.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(1, out.counts.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
     glUseProgram(program.id());
@@ -250,6 +234,7 @@ void benchScene(const BenchScene& bs, const Options& opt) {
     r.gi = "vct";
     r.reuseVoxels = false;
     r.aovs = {"ao", "indirect"};
+    r.params = opt.params;
     std::map<std::string, std::vector<double>> passMs;
     std::vector<double> totalMs;
     RenderResult vctResult;
@@ -283,9 +268,10 @@ void benchScene(const BenchScene& bs, const Options& opt) {
     const View view = makeView(bs.camera, opt.size, opt.size);
     PassTimer timer;
     const GBuffer gbuffer = renderGBuffer(gpu, view, timer);
-    VoxelGrid grid = voxelizeScene(gpu, bs.scene.bounds, opt.voxelRes, ParamMap{}, timer);
-    injectRadiance(grid, gpu, bs.scene, r.sky, ParamMap{}, timer);
-    buildMips(grid, readConeSettings(ParamMap{}).anisotropic, timer);
+    VoxelGrid grid = voxelizeScene(gpu, bs.scene.bounds, opt.voxelRes, opt.params, timer);
+    injectRadiance(grid, gpu, bs.scene, opt.params, timer);
+    traceVoxelBounces(grid, r.sky, readConeSettings(opt.params), opt.params, timer);
+    buildMips(grid, readConeSettings(opt.params).anisotropic, timer);
     GlContext::shared().checkErrors("bench grid");
 
     const int volumeSize = 128;
@@ -294,7 +280,7 @@ void benchScene(const BenchScene& bs, const Options& opt) {
                 "Mfetch/s", "bare ms", "Mfetch/s", "ratio", "copy check (max |diff|)");
     for (bool isGi : {false, true}) {
         const char* name = isGi ? "cone_gi" : "cone_ao";
-        CountedPass counted = countConeFetches(isGi, grid, gbuffer, bs.radius, r.sky);
+        CountedPass counted = countConeFetches(isGi, grid, gbuffer, bs.radius, r.sky, opt.params);
         const double diff = maxAbsDiff(counted.value, isGi ? gi : ao, 4);
         const double passTime = median(passMs[name]);
         const double bareTime = timeBareFetches(volume, volumeSize, counted.counts, opt.size, opt.size, opt.runs);
@@ -319,6 +305,7 @@ int main(int argc, char** argv) {
         else if (a == "--spp") opt.spp = std::atoi(argv[i + 1]);
         else if (a == "--runs") opt.runs = std::max(1, std::atoi(argv[i + 1]));
         else if (a == "--scene") opt.scenes.push_back(argv[i + 1]);
+        else if (a == "--param") opt.params.set(argv[i + 1]);
         else {
             std::fprintf(stderr, "bench_vct: unknown option %s\n", a.c_str());
             return 2;

@@ -174,11 +174,12 @@ struct ConeGather {
     float occlusion;  // sum_c w_c * alpha_c
 };
 
-ConeGather cone_gather(vec3 pWorld, vec3 n, vec3 ng, float maxDist, float falloff, float sky) {
-    vec3 p = (u.voxelFromWorld * vec4(pWorld, 1.0)).xyz;
-    // voxelFromWorld is a uniform scale plus a translation: directions keep their length.
+// The gather from voxel-space point p (the surface point, or a voxel centre for bounces);
+// the cones start `offset` voxels along ng, and `h0` is that start's height above the
+// tangent plane for the plane limit.
+ConeGather cone_gatherVoxel(vec3 p, vec3 n, vec3 ng, float offset, float h0, float maxDist, float falloff,
+                            float sky) {
     mat3 frame = cone_frame(n);
-    float offset = u.march.z;
     vec3 origin = p + ng * offset;
     ConeGather g;
     g.radiance = vec3(0.0);
@@ -191,9 +192,15 @@ ConeGather cone_gather(vec3 pWorld, vec3 n, vec3 ng, float maxDist, float fallof
             g.occlusion += cone.w;
             continue;
         }
-        ConeResult r = cone_march(origin, d, offset, rise, maxDist, falloff);
+        ConeResult r = cone_march(origin, d, h0, rise, maxDist, falloff);
         g.radiance += cone.w * (r.radiance + (1.0 - r.alpha) * sky);
         g.occlusion += cone.w * r.alpha;
     }
     return g;
+}
+
+ConeGather cone_gather(vec3 pWorld, vec3 n, vec3 ng, float maxDist, float falloff, float sky) {
+    // voxelFromWorld is a uniform scale plus a translation: directions keep their length.
+    vec3 p = (u.voxelFromWorld * vec4(pWorld, 1.0)).xyz;
+    return cone_gatherVoxel(p, n, ng, u.march.z, u.march.z, maxDist, falloff, sky);
 }

@@ -27,9 +27,13 @@ VCT_CONST int CONE_MAX_STEPS = 1024;
 VCT_CONST int CONE_UNIT_OPACITY = 10;   // grid.opacity (AO, iso) or grid.radiance (GI, iso)
 VCT_CONST int CONE_UNIT_ANISO = 11;     // 11..16: grid.anisoRadiance[+X, -X, +Y, -Y, +Z, -Z]
 VCT_CONST int CONE_UNIT_COLOR = 17;     // rayMarchVoxels: albedo or radiance
-VCT_CONST int CONE_UNIT_NORMAL = 18;    // GI: grid.normal (level 0), for the facing test
+VCT_CONST int CONE_UNIT_NORMAL = 18;    // GI: grid.normal (mipmapped), for the facing test
+VCT_CONST int CONE_UNIT_BOUNCE_DIRECT = 19;  // cone_bounce.glsl: emission + direct light (level 0)
+VCT_CONST int CONE_UNIT_BOUNCE_ALBEDO = 20;  // cone_bounce.glsl: grid.albedo
 VCT_CONST int CONE_IMAGE_OUTPUT = 0;    // image unit of the output texture
 VCT_CONST int CONE_UBO_BINDING = 0;
+VCT_CONST int CONE_BINDING_VOXEL_LIST = 7;  // cone_bounce.glsl: SSBO of the voxels that gather
+VCT_CONST int CONE_BOUNCE_GROUP = 64;       // cone_bounce.glsl: invocations per group over the list
 
 // AO mappings (ConeSettings::aoMapping).
 VCT_CONST int CONE_AO_LINEAR = 0;    // A = 1 - sum_c w_c alpha_c: estimates BRIEF section 1's A_R

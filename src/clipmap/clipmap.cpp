@@ -83,7 +83,7 @@ void nestLevel(const VoxelGrid& fine, VoxelGrid& coarse, const glm::ivec3& offse
 }  // namespace
 
 Clipmap buildClipmap(const GpuScene& gpuScene, const Scene& scene, const ClipmapLayout& layout, bool inject,
-                     float sky, const ParamMap& params, PassTimer& timer) {
+                     const ParamMap& params, PassTimer& timer) {
     const int n = layout.levelCount;
     if (n < 1 || int(layout.originIndex.size()) != n) throw std::invalid_argument("clipmap: layout has no levels");
     Clipmap cm;
@@ -95,17 +95,10 @@ Clipmap buildClipmap(const GpuScene& gpuScene, const Scene& scene, const Clipmap
         cm.levels[size_t(l)] = voxelizeGrid(gpuScene, makeGridLayout(layout.origin(l), layout.voxelSize(l), res),
                                             params, timer, "voxelize_l" + std::to_string(l));
     if (inject) {
-        // Bounce cones run inside one level and would take its border for the sky: clipmap
-        // levels hold direct light only. An explicit request for bounces is refused.
-        if (params.has("vct.bounces") && readVctBounces(params) > 0)
-            throw std::invalid_argument("vct.clipmap.levels: vct.bounces = " + params.values().at("vct.bounces") +
-                                        " is not supported on clipmaps (use vct.bounces=0)");
-        ParamMap levelParams = params;
-        levelParams.set("vct.bounces", "0");
         for (int l = 0; l < n; ++l) {
             std::vector<const VoxelGrid*> outer;
             for (int k = l + 1; k < n; ++k) outer.push_back(&cm.levels[size_t(k)]);
-            injectRadiance(cm.levels[size_t(l)], gpuScene, scene, sky, levelParams, timer, outer,
+            injectRadiance(cm.levels[size_t(l)], gpuScene, scene, params, timer, outer,
                            "inject_l" + std::to_string(l));
         }
     }

@@ -59,7 +59,7 @@ struct Clipmap {
 // through the coarser ones), nests and builds mips. Timer scopes voxelize_lN, inject_lN,
 // mips_lN (nesting counts with the mips).
 Clipmap buildClipmap(const GpuScene& gpuScene, const Scene& scene, const ClipmapLayout& layout, bool inject,
-                     float sky, const ParamMap& params, PassTimer& timer);
+                     const ParamMap& params, PassTimer& timer);
 
 // Cone traced AO / indirect diffuse over a clipmap: the contracts of coneTraceAO and
 // coneTraceGI (cone/cone_trace.h), isotropic mips whatever settings.anisotropic says.

@@ -1,5 +1,7 @@
 #include "cone/cone_gpu.h"
 
+#include "cone/cone_set.h"
+
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -25,6 +27,54 @@ GlBuffer bindConeUniforms(const gpu::ConeUniforms& u) {
     GlBuffer ubo = createBuffer(sizeof(u), &u, 0);
     glBindBufferBase(GL_UNIFORM_BUFFER, gpu::CONE_UBO_BINDING, ubo.id());
     return ubo;
+}
+
+namespace {
+
+bool useAniso(const VoxelGrid& grid, const ConeSettings& s) {
+    if (!s.anisotropic || !grid.anisotropic || grid.levels < 2) return false;
+    for (const auto& t : grid.anisoRadiance)
+        if (!t) return false;
+    return true;
+}
+
+}  // namespace
+
+gpu::ConeUniforms coneUniforms(bool gi, const VoxelGrid& grid, float maxDistWorld, float sky,
+                               const ConeSettings& settings) {
+    gpu::ConeUniforms u{};
+    setGridUniforms(u, grid);
+    const float halfAperture = 0.5f * settings.apertureDeg * float(M_PI) / 180.f;
+    const float maxDist = maxDistWorld / grid.voxelSize;
+    u.march = glm::vec4(std::tan(halfAperture), settings.stepFactor, settings.offsetVoxels, settings.maxAlpha);
+    const float falloff = (!gi && settings.aoMapping == ConeAoMapping::Falloff && maxDist > 0.f)
+                              ? gpu::CONE_FALLOFF_LAMBDA_R / maxDist
+                              : 0.f;
+    u.limits = glm::vec4(maxDist, sky, falloff, settings.planeLimit ? gpu::CONE_PLANE_LIMIT_RATIO : 0.f);
+    const std::vector<glm::vec4> cones = diffuseConeSet(settings.coneCount);
+    u.config = glm::ivec4(int(cones.size()), gi ? gpu::CONE_AO_LINEAR : int(settings.aoMapping), 0, 0);
+    for (size_t i = 0; i < cones.size(); ++i) u.cones[i] = cones[i];
+    return u;
+}
+
+ShaderDefines bindGridTextures(bool gi, const VoxelGrid& grid, const ConeSettings& settings) {
+    const bool aniso = useAniso(grid, settings);
+    glBindTextureUnit(gpu::CONE_UNIT_OPACITY, gi ? grid.radiance.id() : grid.opacity.id());
+    if (gi) glBindTextureUnit(gpu::CONE_UNIT_NORMAL, grid.normal.id());
+    if (aniso)
+        for (int i = 0; i < 6; ++i) glBindTextureUnit(gpu::CONE_UNIT_ANISO + i, grid.anisoRadiance[i].id());
+    return {{"CONE_GI", gi ? "1" : "0"}, {"CONE_ANISO", aniso ? "1" : "0"}};
+}
+
+BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffer, float maxDistWorld, float sky,
+                           const ConeSettings& settings) {
+    gpu::ConeUniforms u = coneUniforms(gi, grid, maxDistWorld, sky, settings);
+    u.image = glm::ivec4(gbuffer.width, gbuffer.height, 0, 0);
+    BoundConePass bound;
+    bound.ubo = bindConeUniforms(u);
+    bindGBufferTextures(gbuffer);  // the shaders texelFetch position, normal, geomNormal, albedo
+    bound.defines = bindGridTextures(gi, grid, settings);
+    return bound;
 }
 
 void checkGrid(const VoxelGrid& grid, const std::string& pass) {

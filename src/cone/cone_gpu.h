@@ -2,9 +2,11 @@
 // block, binding the grid's textures.
 #pragma once
 
+#include "cone/cone_settings.h"
 #include "cone/cone_shared.h"
 #include "gl/handles.h"
 #include "gl/program.h"
+#include "render/gbuffer.h"
 #include "voxelize/voxel_grid.h"
 
 #include <string>
@@ -20,6 +22,25 @@ void setGridUniforms(gpu::ConeUniforms& u, const VoxelGrid& grid);
 // Uploads `u` into a fresh uniform buffer bound at CONE_UBO_BINDING; keep it alive until
 // the dispatch is issued.
 GlBuffer bindConeUniforms(const gpu::ConeUniforms& u);
+
+// The uniform block of a cone pass over `grid` (image size left 0): march constants, the
+// distance limit (world units), sky radiance, plane limit, the cone set.
+gpu::ConeUniforms coneUniforms(bool gi, const VoxelGrid& grid, float maxDistWorld, float sky,
+                               const ConeSettings& settings);
+
+// Binds the grid's textures a cone pass samples (opacity or radiance, normals for GI's
+// facing test, the directional mips when used) and returns the CONE_GI / CONE_ANISO defines.
+ShaderDefines bindGridTextures(bool gi, const VoxelGrid& grid, const ConeSettings& settings);
+
+// One cone pass bound and ready for its program's dispatch: uniforms uploaded and bound,
+// the G-buffer, the grid's textures (opacity or radiance, directional mips, normals for
+// GI's facing test) on their units. `defines` are the CONE_GI / CONE_ANISO the shader needs.
+struct BoundConePass {
+    GlBuffer ubo;
+    ShaderDefines defines;
+};
+BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffer, float maxDistWorld, float sky,
+                           const ConeSettings& settings);
 
 // Throws std::invalid_argument naming `pass` if the grid is not usable.
 void checkGrid(const VoxelGrid& grid, const std::string& pass);

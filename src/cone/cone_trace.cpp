@@ -17,13 +17,6 @@ namespace {
 
 enum class ConeMode { AO, GI };
 
-bool useAniso(const VoxelGrid& grid, const ConeSettings& s) {
-    if (!s.anisotropic || !grid.anisotropic || grid.levels < 2) return false;
-    for (const auto& t : grid.anisoRadiance)
-        if (!t) return false;
-    return true;
-}
-
 void checkGBuffer(const GBuffer& g, const View& view, const std::string& pass) {
     if (g.width <= 0 || g.height <= 0 || !g.position || !g.normal || !g.geomNormal || !g.albedo)
         throw std::invalid_argument(pass + ": G-buffer is incomplete (position, normal, geomNormal, albedo)");
@@ -37,32 +30,9 @@ void checkGBuffer(const GBuffer& g, const View& view, const std::string& pass) {
 GlTexture tracePass(ConeMode mode, const VoxelGrid& grid, const GBuffer& gbuffer, float maxDistWorld, float sky,
                     const ConeSettings& settings) {
     const bool gi = mode == ConeMode::GI;
-    const bool aniso = useAniso(grid, settings);
-
-    gpu::ConeUniforms u{};
-    setGridUniforms(u, grid);
-    float halfAperture = 0.5f * settings.apertureDeg * float(M_PI) / 180.f;
-    float maxDist = maxDistWorld / grid.voxelSize;
-    u.march = glm::vec4(std::tan(halfAperture), settings.stepFactor, settings.offsetVoxels, settings.maxAlpha);
-    float falloff = (!gi && settings.aoMapping == ConeAoMapping::Falloff && maxDist > 0.f)
-                        ? gpu::CONE_FALLOFF_LAMBDA_R / maxDist
-                        : 0.f;
-    u.limits = glm::vec4(maxDist, sky, falloff, settings.planeLimit ? gpu::CONE_PLANE_LIMIT_RATIO : 0.f);
-    std::vector<glm::vec4> cones = diffuseConeSet(settings.coneCount);
-    u.config = glm::ivec4(int(cones.size()), gi ? gpu::CONE_AO_LINEAR : int(settings.aoMapping), 0, 0);
-    u.image = glm::ivec4(gbuffer.width, gbuffer.height, 0, 0);
-    for (size_t i = 0; i < cones.size(); ++i) u.cones[i] = cones[i];
-
-    GLuint program = coneProgram(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl",
-                                 {{"CONE_GI", gi ? "1" : "0"}, {"CONE_ANISO", aniso ? "1" : "0"}});
+    BoundConePass bound = bindConePass(gi, grid, gbuffer, maxDistWorld, sky, settings);
+    GLuint program = coneProgram(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl", bound.defines);
     GlTexture out = createTexture2D(gi ? GL_RGBA32F : GL_R32F, gbuffer.width, gbuffer.height);
-    GlBuffer ubo = bindConeUniforms(u);
-
-    bindGBufferTextures(gbuffer);  // the shaders texelFetch position, normal, geomNormal, albedo
-    glBindTextureUnit(gpu::CONE_UNIT_OPACITY, gi ? grid.radiance.id() : grid.opacity.id());
-    if (gi) glBindTextureUnit(gpu::CONE_UNIT_NORMAL, grid.normal.id());
-    if (aniso)
-        for (int i = 0; i < 6; ++i) glBindTextureUnit(gpu::CONE_UNIT_ANISO + i, grid.anisoRadiance[i].id());
     glBindImageTexture(gpu::CONE_IMAGE_OUTPUT, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                        gi ? GL_RGBA32F : GL_R32F);
 

@@ -10,7 +10,7 @@
 #include "reference/reference_ao.h"
 #include "render/params.h"
 #include "render/plan.h"
-#include "voxelize/voxelize.h"
+#include "cone/cone_bounce.h"
 
 namespace vct {
 

@@ -2,6 +2,7 @@
 
 #include "ao/screen_space_ao.h"
 #include "clipmap/clipmap.h"
+#include "cone/cone_bounce.h"
 #include "cone/cone_trace.h"
 #include "voxelize/voxelize.h"
 #include "gl/context.h"
@@ -108,8 +109,11 @@ void runReferenceGi(const RenderRequest& r, const Scene& scene, const View& view
 // A key of everything a grid depends on: two requests with the same key share one grid.
 std::string gridKey(const RenderRequest& r, bool inject, bool aniso) {
     std::string k = std::to_string(r.voxelRes) + (inject ? "+inject" : "") + (aniso ? "+aniso" : "");
+    // Bounces trace with the pixel cones' settings: then every cone parameter shapes the grid.
+    const bool bounced = inject && readVctBounces(r.params) > 0;
     for (const auto& [key, value] : r.params.values())
-        if (key.rfind("vct.voxel.", 0) == 0 || key.rfind("vct.inject.", 0) == 0 || key.rfind("vct.bounce", 0) == 0)
+        if (key.rfind("vct.voxel.", 0) == 0 || key.rfind("vct.inject.", 0) == 0 || key.rfind("vct.bounce", 0) == 0 ||
+            (bounced && key.rfind("vct.", 0) == 0 && key.rfind("vct.view.", 0) != 0))
             k += ";" + key + "=" + value;
     if (inject) k += ";sky=" + std::to_string(r.sky);
     return k;
@@ -219,8 +223,13 @@ VoxelVolume voxelGridFor(const RenderPlan& plan, const RenderRequest& r, const S
     }
     GlContext& gl = GlContext::shared();
     if (levels > 0 && !v.clipmap) {
+        // Bounce cones would run inside one level and take its border for the sky: clipmap
+        // levels hold direct light only. An explicit request for bounces is refused.
+        if (inject && r.params.has("vct.bounces") && readVctBounces(r.params) > 0)
+            throw std::invalid_argument("vct.clipmap.levels: vct.bounces = " + r.params.values().at("vct.bounces") +
+                                        " is not supported on clipmaps (use vct.bounces=0)");
         const ClipmapLayout layout = computeClipmapLayout(region.bounds, r.camera.eye, levels, r.voxelRes);
-        v.clipmap = std::make_shared<Clipmap>(buildClipmap(gpu, scene, layout, inject, r.sky, r.params, timer));
+        v.clipmap = std::make_shared<Clipmap>(buildClipmap(gpu, scene, layout, inject, r.params, timer));
         gl.checkErrors("clipmap");
         runCounts["voxelize"]++;
         if (inject) runCounts["inject"]++;
@@ -231,9 +240,11 @@ VoxelVolume voxelGridFor(const RenderPlan& plan, const RenderRequest& r, const S
         gl.checkErrors("voxelize");
         runCounts["voxelize"]++;
         if (inject) {
-            injectRadiance(*v.grid, gpu, scene, r.sky, r.params, timer);
+            injectRadiance(*v.grid, gpu, scene, r.params, timer);
             gl.checkErrors("inject");
             runCounts["inject"]++;
+            traceVoxelBounces(*v.grid, r.sky, cone, r.params, timer);
+            gl.checkErrors("bounce");
         }
         buildMips(*v.grid, aniso, timer);
         gl.checkErrors("mips");

@@ -7,7 +7,7 @@
 // Opacity and premultiplied radiance average alike, so the box filter is exact. Each parent
 // sums its children in a fixed order: the levels are deterministic.
 #include "vdb/sparse_detail.h"
-#include "voxelize/voxelize.h"
+#include "cone/cone_bounce.h"
 
 #include <openvdb/tools/Prune.h>
 #include <openvdb/tree/LeafManager.h>

@@ -10,11 +10,6 @@
 
 namespace vct {
 
-int readVctBounces(const ParamMap& params) {
-    return params.getInt("vct.bounces", kDefaultVctBounces, 0, 8,
-                         "extra diffuse bounces traced between voxels (dense grid only; the vdb backend and "
-                         "clipmaps inject direct light only)");
-}
 
 namespace {
 
@@ -41,21 +36,18 @@ void dispatchGrid(const glm::ivec3& size) {
 
 }  // namespace
 
-void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scene, float sky,
+void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scene,
                     const ParamMap& params, PassTimer& timer, const std::vector<const VoxelGrid*>& outerLevels,
                     const std::string& scopeName) {
     if (!grid.opacity || !grid.albedo || !grid.normal || !grid.emission)
         throw std::invalid_argument("injectRadiance: the grid is not voxelized");
-    if (!std::isfinite(sky) || sky < 0.f) throw std::invalid_argument("injectRadiance: sky radiance must be finite and >= 0");
     for (const Light& l : scene.lights)
         if (!std::isfinite(l.color.x + l.color.y + l.color.z) ||
             !std::isfinite(l.position.x + l.position.y + l.position.z) ||
             !std::isfinite(l.direction.x + l.direction.y + l.direction.z))
             throw std::invalid_argument("injectRadiance: light '" + l.name + "' has a non-finite value");
-    const int bounces = readVctBounces(params);
     const float offset = params.getFloat("vct.inject.offset", 2.f, 0.f, 16.f,
                                          "voxels along the normal where shadow rays of injection start");
-    const bool bounceSky = params.getBool("vct.bounce.sky", true, "bounce cones that escape see the sky radiance");
     const std::string precision =
         params.getChoice("vct.voxel.precision", "auto", {"auto", "half", "float"},
                          "storage of emission/radiance: half (RGBA16F, clamps at 65504), float (RGBA32F), "
@@ -76,11 +68,6 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
     GlProgram inject = buildComputeProgram("voxelize/inject.glsl", injectDefines);
     const glm::ivec3 res = grid.resolution;
     grid.radiance = createTexture3D(format, res.x, res.y, res.z, grid.levels);
-    GlProgram bounce, mips;
-    if (bounces > 0) {
-        bounce = buildComputeProgram("voxelize/bounce.glsl", defines);
-        mips = buildIsotropicMipProgram(grid);
-    }
 
     auto scope = timer.scope(scopeName);
 
@@ -112,30 +99,6 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
     glUseProgram(p);
     dispatchGrid(res);
 
-    if (bounces > 0) {
-        // The direct term stays fixed; each bounce re-gathers from the previous total.
-        GlTexture direct = createTexture3D(format, res.x, res.y, res.z);
-        GlTexture next = createTexture3D(format, res.x, res.y, res.z);
-        glCopyImageSubData(grid.radiance.id(), GL_TEXTURE_3D, 0, 0, 0, 0, direct.id(), GL_TEXTURE_3D, 0, 0, 0, 0,
-                           res.x, res.y, res.z);
-        const GLuint b = bounce.id();
-        setUniform(b, "uResolution", res);
-        setUniform(b, "uSky", bounceSky ? sky : 0.f);
-        setUniform(b, "uMaxLevel", float(grid.levels - 1));
-        for (int i = 0; i < bounces; ++i) {
-            buildIsotropicMips(grid, mips);
-            glBindTextureUnit(0, grid.radiance.id());
-            glBindTextureUnit(1, direct.id());
-            glBindTextureUnit(2, grid.albedo.id());
-            glBindTextureUnit(3, grid.normal.id());
-            bindImage3D(0, next.id(), 0, GL_WRITE_ONLY, format);
-            glUseProgram(b);
-            dispatchGrid(res);
-            glCopyImageSubData(next.id(), GL_TEXTURE_3D, 0, 0, 0, 0, grid.radiance.id(), GL_TEXTURE_3D, 0, 0, 0, 0,
-                               res.x, res.y, res.z);
-            glMemoryBarrier(GL_ALL_BARRIER_BITS);
-        }
-    }
     for (GLuint u = 0; u < 4; ++u) glBindTextureUnit(u, 0);
     for (size_t k = 0; k < outerLevels.size(); ++k) glBindTextureUnit(GLuint(outerUnit + k), 0);
     glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);

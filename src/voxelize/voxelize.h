@@ -1,7 +1,8 @@
 // Building the VoxelGrid of voxel_grid.h on the GPU: conservative voxelization of the scene's
 // triangles, direct-light (+ optional multi-bounce) radiance injection, and mip pyramids.
 //
-// Typical use (GI):   grid = voxelizeScene(...); injectRadiance(grid, ...); buildMips(grid, aniso, ...)
+// Typical use (GI):   grid = voxelizeScene(...); injectRadiance(grid, ...);
+//                     [traceVoxelBounces(grid, ...) (cone/cone_bounce.h);] buildMips(grid, aniso, ...)
 // AO only:            grid = voxelizeScene(...); buildMips(grid, aniso, ...)
 //   (grid.radiance stays empty - id 0 - and buildMips builds opacity mips only; anisotropic
 //   textures then carry rgb = 0 and the directional opacity in alpha.)
@@ -11,10 +12,7 @@
 //                        "half" is RGBA16F (contract default; values clamp at 65504),
 //                        "float" RGBA32F; "auto" picks float when the scene's emission or
 //                        lights could exceed the half range (e.g. emission 1e6). Default auto.
-//   vct.bounces          0..8, default 1 (kDefaultVctBounces): extra diffuse bounces traced
-//                        voxel to voxel.
 //   vct.inject.offset    0..16 voxels, default 2: shadow rays start this far along the normal.
-//   vct.bounce.sky       0|1, default 1: bounce cones that escape see the sky radiance `sky`.
 #pragma once
 
 #include "render/gpu_scene.h"
@@ -26,15 +24,6 @@
 #include <vector>
 
 namespace vct {
-
-// Default of vct.bounces. One extra bounce: the reference's paths carry several, and with
-// direct light alone in the voxels the Cornell box's indirect light is 37% too dark (with
-// one bounce -7%, bias -0.025 against 4 path-traced bounces; docs in README, VCT section).
-// It costs a second gather per voxel (the inject pass grows about 5x).
-constexpr int kDefaultVctBounces = 1;
-
-// Reads vct.bounces (range 0..8, default kDefaultVctBounces) with its --help-params line.
-int readVctBounces(const ParamMap& params);
 
 // Conservative voxelization of every triangle overlapping `region` (Akenine-Moller SAT per
 // candidate voxel; no holes for thin, sub-voxel or axis-aligned triangles). Averages are
@@ -52,13 +41,13 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
 // Writes grid.radiance level 0: premultiplied (L * opacity, opacity), where L = emission +
 // albedo / pi * sum of the punctual lights' irradiance on the voxel's average normal, each
 // with visibility from a ray marched through the opacity grid (glTF KHR_lights_punctual
-// units). With vct.bounces = N, adds N diffuse bounces (6 cones of 60 degrees per voxel;
-// escaped cones see radiance `sky`). Call buildMips afterwards. Timer scope "inject".
+// units). Further bounces are cone/cone_bounce.h's (traceVoxelBounces). Call buildMips
+// afterwards. Timer scope "inject".
 //
 // `outerLevels` (clipmaps, src/clipmap): voxelized coarser grids that contain this one,
 // innermost first (at most 7, cubic, of this grid's resolution); shadow rays leaving this
 // grid continue through them. `scopeName` replaces the timer scope's name.
-void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scene, float sky,
+void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scene,
                     const ParamMap& params, PassTimer& timer,
                     const std::vector<const VoxelGrid*>& outerLevels = {},
                     const std::string& scopeName = "inject");

@@ -62,7 +62,7 @@ struct Fixture {
         params.set("vct.aniso", "0");
         params.set("vct.bounces", "0");  // the sparse path injects direct light only
         grid = voxelizeScene(gpu, scene.bounds, res, params, timer);
-        injectRadiance(grid, gpu, scene, sky, params, timer);
+        injectRadiance(grid, gpu, scene, params, timer);
         buildMips(grid, false, timer);
         gl.checkErrors("vdb_vs_gl: dense grid");
         sparse = buildSparseVoxels(scene, res, true, sky, params);

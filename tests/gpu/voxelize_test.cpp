@@ -1,5 +1,6 @@
 // Voxelization, injection and mips (src/voxelize) against closed forms and an independent
 // CPU triangle/box overlap test.
+#include "cone/cone_bounce.h"
 #include "gl/context.h"
 #include "render/gpu_scene.h"
 #include "voxelize/voxelize.h"
@@ -185,14 +186,6 @@ HoleReport compareWithCpu(const Scene& s, const VoxelGrid& g) {
     return r;
 }
 
-// Direct light and emission only (vct.bounces = 0): the injection tests compare with closed
-// forms of what lights and emitters put into a voxel, before any bounce between voxels.
-ParamMap directOnly() {
-    ParamMap p;
-    p.set("vct.bounces", "0");
-    return p;
-}
-
 VoxelGrid voxelize(const Scene& scene, const GpuScene& gpu, int res, const Bounds3* region = nullptr,
                    const ParamMap& params = ParamMap()) {
     PassTimer timer;
@@ -344,7 +337,7 @@ TEST(Voxelize, EmissionUpToMillionStaysFinite) {
     GpuScene gpu = upload(t.scene);
     VoxelGrid g = voxelize(t.scene, gpu, 16);
     PassTimer timer;
-    injectRadiance(g, gpu, t.scene, 0.f, directOnly(), timer);
+    injectRadiance(g, gpu, t.scene, ParamMap(), timer);
     GlContext::shared().checkErrors("inject");
     Volume e = readVolume(g.emission, 0, 4), r = readVolume(g.radiance, 0, 4);
     int n = 0;
@@ -404,7 +397,7 @@ FloorResult injectFloor(const FloorScene& f, int res) {
     GpuScene gpu = upload(f.t.scene);
     VoxelGrid g = voxelize(f.t.scene, gpu, res);
     PassTimer timer;
-    injectRadiance(g, gpu, f.t.scene, 0.f, directOnly(), timer);
+    injectRadiance(g, gpu, f.t.scene, ParamMap(), timer);
     GlContext::shared().checkErrors("inject");
     Volume r = readVolume(g.radiance, 0, 4);
     const double expected = f.rho / PI * f.lux * double(-f.lightDir.y);
@@ -472,7 +465,7 @@ TEST(Inject, SpotLightFollowsInverseSquareAndGltfFalloff) {
     GpuScene gpu = upload(t.scene);
     VoxelGrid g = voxelize(t.scene, gpu, 32);
     PassTimer timer;
-    injectRadiance(g, gpu, t.scene, 0.f, directOnly(), timer);
+    injectRadiance(g, gpu, t.scene, ParamMap(), timer);
     GlContext::shared().checkErrors("inject spot");
     Volume r = readVolume(g.radiance, 0, 4);
     int inner = 0, falloff = 0, outside = 0;
@@ -519,7 +512,8 @@ TEST(Inject, BouncesAddBoundedEnergy) {
         ParamMap params;
         params.set("vct.bounces", std::to_string(bounces));
         PassTimer timer;
-        injectRadiance(g, gpu, t.scene, 0.f, params, timer);
+        injectRadiance(g, gpu, t.scene, params, timer);
+        traceVoxelBounces(g, 0.f, readConeSettings(params), params, timer);
         GlContext::shared().checkErrors("inject bounces");
         means.push_back(readVolume(g.radiance, 0, 4).mean(0));
     }
@@ -575,7 +569,7 @@ TEST(Mips, SolidBlockIsOpaqueEmptyIsZeroAndMeansArePreserved) {
     t.scene.lights.push_back(l);
     GpuScene lit = upload(t.scene);
     VoxelGrid g2 = voxelize(t.scene, lit, 32, &region);
-    injectRadiance(g2, lit, t.scene, 0.f, directOnly(), timer);
+    injectRadiance(g2, lit, t.scene, ParamMap(), timer);
     buildMips(g2, true, timer);
     GlContext::shared().checkErrors("mips with radiance");
     Volume r0 = readVolume(g2.radiance, 0, 4);

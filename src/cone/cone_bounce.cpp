@@ -1,0 +1,82 @@
+#include "cone/cone_bounce.h"
+
+#include "cone/cone_gpu.h"
+#include "voxelize/voxel_gl.h"
+#include "voxelize/voxelize.h"
+
+#include <stdexcept>
+
+namespace vct {
+
+using namespace conedetail;
+
+int readVctBounces(const ParamMap& params) {
+    return params.getInt("vct.bounces", kDefaultVctBounces, 0, 8,
+                         "extra diffuse bounces traced between voxels (dense grid only; the vdb backend and "
+                         "clipmaps inject direct light only)");
+}
+
+void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, const ParamMap& params,
+                       PassTimer& timer) {
+    const int bounces = readVctBounces(params);
+    const bool bounceSky = params.getBool("vct.bounce.sky", true, "bounce cones that escape see the sky radiance");
+    if (bounces == 0) return;
+    if (!grid.radiance || !grid.albedo || !grid.normal)
+        throw std::invalid_argument("traceVoxelBounces: the grid has no injected radiance");
+    if (!(sky >= 0.f) || !std::isfinite(sky))
+        throw std::invalid_argument("traceVoxelBounces: sky radiance must be finite and >= 0");
+    cone.validate();
+
+    const glm::ivec3 res = grid.resolution;
+    const GLenum format = textureInternalFormat(grid.radiance.id());
+    const float diagonal = glm::length(glm::vec3(res)) * grid.voxelSize;
+    PassTimer mipsTimer;  // the mips rebuilt inside the bounce count towards "bounce"
+    auto scope = timer.scope("bounce");
+    // The direct term stays fixed; each bounce re-gathers from the previous total.
+    GlTexture direct = createTexture3D(format, res.x, res.y, res.z);
+    GlTexture next = createTexture3D(format, res.x, res.y, res.z);
+    glCopyImageSubData(grid.radiance.id(), GL_TEXTURE_3D, 0, 0, 0, 0, direct.id(), GL_TEXTURE_3D, 0, 0, 0, 0, res.x,
+                       res.y, res.z);
+    const gpu::ConeUniforms u = coneUniforms(true, grid, 2.f * diagonal, bounceSky ? sky : 0.f, cone);
+    const uint32_t zero = 0;
+    GlBuffer list = createBuffer(sizeof(uint32_t) * (1 + size_t(res.x) * res.y * res.z), nullptr,
+                                 GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferSubData(list.id(), 0, sizeof(zero), &zero);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_VOXEL_LIST, list.id());
+    uint32_t listed = 0;
+    for (int i = 0; i < bounces; ++i) {
+        buildMips(grid, cone.anisotropic, mipsTimer, "bounce_mips");
+        GlBuffer ubo = bindConeUniforms(u);
+        ShaderDefines defines = bindGridTextures(true, grid, cone);
+        defines.push_back({"RADIANCE_FORMAT", glslImageFormat(format)});
+        defines.push_back({"RADIANCE_FORMAT_MAX", formatMaxLiteral(format)});
+        glBindTextureUnit(gpu::CONE_UNIT_BOUNCE_DIRECT, direct.id());
+        glBindTextureUnit(gpu::CONE_UNIT_BOUNCE_ALBEDO, grid.albedo.id());
+        if (i == 0) {
+            // The gathering voxels, listed once: direct light and normals do not change.
+            ShaderDefines listDefines = defines;
+            listDefines.push_back({"BOUNCE_LIST", "1"});
+            glUseProgram(coneProgram("cone/cone_bounce.glsl", listDefines));
+            const int g = gpu::VOX_GRID_GROUP;
+            glDispatchCompute(groupCount(res.x, g), groupCount(res.y, g), groupCount(res.z, g));
+            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+            glGetNamedBufferSubData(list.id(), 0, sizeof(listed), &listed);
+        }
+        // Voxels that do not gather keep their direct light.
+        glCopyImageSubData(direct.id(), GL_TEXTURE_3D, 0, 0, 0, 0, next.id(), GL_TEXTURE_3D, 0, 0, 0, 0, res.x, res.y,
+                           res.z);
+        bindImage3D(gpu::CONE_IMAGE_OUTPUT, next.id(), 0, GL_WRITE_ONLY, format);
+        glUseProgram(coneProgram("cone/cone_bounce.glsl", defines));
+        glDispatchCompute(groupCount(int(listed), gpu::CONE_BOUNCE_GROUP), 1, 1);
+        glMemoryBarrier(GL_ALL_BARRIER_BITS);
+        glCopyImageSubData(next.id(), GL_TEXTURE_3D, 0, 0, 0, 0, grid.radiance.id(), GL_TEXTURE_3D, 0, 0, 0, 0, res.x,
+                           res.y, res.z);
+        glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_VOXEL_LIST, 0);
+    glBindImageTexture(gpu::CONE_IMAGE_OUTPUT, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    glUseProgram(0);
+    grid.memoryBytes = voxelGridMemoryBytes(grid);
+}
+
+}  // namespace vct
