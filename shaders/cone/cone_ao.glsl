@@ -1,7 +1,12 @@
 // Voxel cone traced ambient occlusion: per pixel, the cone set around the shading normal,
 // each cone limited to distance R; A = 1 - sum_c w_c alpha_c (CONE_AO_LINEAR), which
-// estimates BRIEF section 1's A_R. Sky pixels read 1.
+// estimates BRIEF section 1's A_R. Sky pixels read 1. Dense grid, or (CONE_CLIPMAP) clipmap.
+#include "cone/cone_common.glsl"
+#ifdef CONE_CLIPMAP
+#include "cone/clipmap_march.glsl"
+#else
 #include "cone/cone_march.glsl"
+#endif
 
 layout(local_size_x = CONE_LOCAL_SIZE, local_size_y = CONE_LOCAL_SIZE) in;
 layout(r32f, binding = CONE_IMAGE_OUTPUT) uniform writeonly image2D cone_aoOut;

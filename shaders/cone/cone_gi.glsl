@@ -1,8 +1,14 @@
 // Voxel cone traced indirect diffuse: per pixel, albedo / pi * integral of L_in cos over the
 // hemisphere ~= albedo * sum_c w_c L_c (the weights already carry the 1 / pi of the cosine
 // lobe), where L_c is the premultiplied radiance a cone gathers front to back plus the sky
-// seen through what it left unoccluded. Sky pixels read 0.
+// seen through what it left unoccluded. Sky pixels read 0. Dense grid, or (CONE_CLIPMAP)
+// clipmap.
+#include "cone/cone_common.glsl"
+#ifdef CONE_CLIPMAP
+#include "cone/clipmap_march.glsl"
+#else
 #include "cone/cone_march.glsl"
+#endif
 
 layout(local_size_x = CONE_LOCAL_SIZE, local_size_y = CONE_LOCAL_SIZE) in;
 layout(rgba32f, binding = CONE_IMAGE_OUTPUT) uniform writeonly image2D cone_giOut;

@@ -32,19 +32,8 @@ GlTexture traceClipmap(bool gi, const Clipmap& cm, const GBuffer& gbuffer, float
                        const ConeSettings& settings) {
     const ClipmapLayout& layout = cm.layout;
     const VoxelGrid& base = cm.levels.front();
-    gpu::ConeUniforms u{};
-    setGridUniforms(u, base);
-    const float halfAperture = 0.5f * settings.apertureDeg * float(M_PI) / 180.f;
-    const float maxDist = maxDistWorld / base.voxelSize;
-    u.march = glm::vec4(std::tan(halfAperture), settings.stepFactor, settings.offsetVoxels, settings.maxAlpha);
-    const float falloff = (!gi && settings.aoMapping == ConeAoMapping::Falloff && maxDist > 0.f)
-                              ? gpu::CONE_FALLOFF_LAMBDA_R / maxDist
-                              : 0.f;
-    u.limits = glm::vec4(maxDist, sky, falloff, settings.planeLimit ? gpu::CONE_PLANE_LIMIT_RATIO : 0.f);
-    const std::vector<glm::vec4> cones = diffuseConeSet(settings.coneCount);
-    u.config = glm::ivec4(int(cones.size()), gi ? gpu::CONE_AO_LINEAR : int(settings.aoMapping), 0, 0);
+    gpu::ConeUniforms u = coneUniforms(gi, base, maxDistWorld, sky, settings);
     u.image = glm::ivec4(gbuffer.width, gbuffer.height, 0, 0);
-    for (size_t i = 0; i < cones.size(); ++i) u.cones[i] = cones[i];
 
     gpu::ClipmapUniforms c{};
     for (int l = 0; l < layout.levelCount; ++l) {
@@ -56,8 +45,8 @@ GlTexture traceClipmap(bool gi, const Clipmap& cm, const GBuffer& gbuffer, float
     c.info = glm::vec4(float(layout.levelCount), float(layout.resolution), float(base.levels), 0.f);
     c.band = glm::vec4(gpu::CLIPMAP_BORDER_MARGIN, gpu::CLIPMAP_BLEND_WIDTH, 0.f, 0.f);
 
-    const GLuint program = coneProgram(gi ? "cone/clipmap_gi.glsl" : "cone/clipmap_ao.glsl",
-                                       {{"CONE_GI", gi ? "1" : "0"}});
+    const GLuint program = coneProgram(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl",
+                                       {{"CONE_GI", gi ? "1" : "0"}, {"CONE_CLIPMAP", "1"}});
     GlTexture out = createTexture2D(gi ? GL_RGBA32F : GL_R32F, gbuffer.width, gbuffer.height);
     GlBuffer ubo = bindConeUniforms(u);
     GlBuffer clipUbo = createBuffer(sizeof(c), &c, 0);
