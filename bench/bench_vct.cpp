@@ -252,7 +252,7 @@ void benchScene(const BenchScene& bs, const Options& opt) {
     const double giMean = imageMean(gi, &mask), refGiMean = imageMean(ref.aovs.at("indirect"), &mask);
 
     std::printf("passes (median ms of %d runs):", opt.runs);
-    for (const char* name : {"voxelize", "inject", "mips", "cone_ao", "cone_gi"})
+    for (const char* name : {"voxelize", "inject", "bounce", "mips", "cone_ao", "cone_gi"})
         std::printf("  %s %.1f", name, passMs.count(name) ? median(passMs[name]) : -1.0);
     std::printf("  | whole render %.1f  | reference (AO + GI, %d spp) %.0f\n", median(totalMs), opt.spp, refMs);
     std::printf("AO  vs reference: rmse %.4f  mae %.4f  bias %+.4f  ssim %.3f  (reference stderr/pixel %.4f)\n",

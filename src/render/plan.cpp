@@ -84,7 +84,9 @@ std::vector<PassDecl> declarePasses(const SceneFeatures& s, const RenderRequest&
         else if (!lights && !s.hasEmission)
             notApplicable["inject"] = "the scene has no lights and no emission: the only light is the sky";
         else
-            d.push_back({"inject", {"voxels"}, {"radiance"}, "direct light and emission into the voxels"});
+            d.push_back({"inject", {"voxels"}, {"radiance"},
+                         "direct light and emission into the voxels, then vct.bounces diffuse bounces between "
+                         "them (dense grid; timed as 'bounce')"});
         std::vector<std::string> mipReads{"voxels"};
         if (r.gi == "vct" && (lights || s.hasEmission)) mipReads.push_back("radiance");
         d.push_back({"mips", mipReads, {"voxel_mips"}, "filtered levels for wide cones"});

@@ -240,7 +240,11 @@ TEST(StabilityParams, ClosedEmissiveBoxConverges) {
     // emitter as direct, vct as indirect; the sum is the same quantity).
     const double limit = Le / (1 - rho);
     const std::string name = "closed box, rho 0.8, all emit";
-    recordCaseInfo(name, "inside a closed 2^3 box, every wall Le = 1 and rho = 0.8, sky 0; vct 8 bounces, reference 64.",
+    recordCaseInfo(name, "inside a closed 2^3 box, every wall Le = 1 and rho = 0.8, sky 0; vct 8 bounces, reference 64. "
+                         "The walls are wound outwards with doubleSided materials: the reference lights and sees both "
+                         "faces; vct treats every surface as one-sided by its winding (injection and vox_facingWeight), "
+                         "so from inside it sees the walls' backs and stays dark (0.37 before radiance left voxels "
+                         "from their fronts only).",
                    "beauty (Le + direct + indirect) / the infinite-bounce limit Le / (1 - rho) = 5: max over pixels "
                    "(must stay <= 1; the reference's per-pixel max carries its noise) and mean (1 when converged).");
     for (const auto& m : giMethodColumns()) {
