@@ -104,11 +104,12 @@ TEST(VdbCone, WhiteFurnace) {
     }
 }
 
-// An emissive panel (Le, no lights, no sky) 1.3 voxels above a floor: the floor's cones start
-// 1.5 voxels up, among the panel's voxels. Facing the floor, the panel lights it with nearly
-// its whole hemisphere (view factor of a 2 m square at 0.08 m: ~0.99, so GI ~ albedo * Le).
-// Facing away, the floor sees the panel's back, which emits nothing: GI ~ 0. Without the
-// facing test (vox_facingWeight) the second case gathered the panel's Le through its back.
+// An emissive panel (Le, no lights, no sky) 2.5 voxels above a floor; the floor's cones start
+// 1.5 voxels up, one voxel under it. Facing the floor, the panel lights it with nearly its
+// whole hemisphere (view factor of a 2 m square at 0.16 m: ~0.97, so GI ~ albedo * Le; the
+// cones saturate on the panel and read 0.98 of it). Facing away, the floor sees the panel's
+// back, which emits nothing: GI ~ 0. Without the facing rule (vox_facingWeight, at every
+// level) the second case gathered 0.48 of the first through the panel's back.
 TEST(VdbCone, EmitterSeenFromBehindPassesNoLight) {
     const float Le = 4.f, albedo = 0.5f;
     auto giUnderPanel = [&](bool facingFloor) {
