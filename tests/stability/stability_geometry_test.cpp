@@ -18,16 +18,7 @@ using namespace stab;
 namespace {
 
 RenderRequest requestFor(const Camera& camera, float radius, int size = 40) {
-    RenderRequest r;
-    r.width = r.height = size;
-    r.camera = camera;
-    r.radius = radius;
-    r.spp = 16;
-    r.seed = 3;
-    r.voxelRes = 48;
-    r.sky = 1.f;
-    r.params.set("reference.replicates", "1");
-    return r;
+    return baseRequest(camera, radius, size, 3);
 }
 
 void addTriangle(Scene& s, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 n, uint32_t mat) {

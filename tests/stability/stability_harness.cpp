@@ -310,4 +310,17 @@ vct::Camera cornerCamera(float scale) {
     return c;
 }
 
+vct::RenderRequest baseRequest(const vct::Camera& camera, float radius, int size, uint32_t seed) {
+    vct::RenderRequest r;
+    r.width = r.height = size;
+    r.camera = camera;
+    r.radius = radius;
+    r.spp = 16;
+    r.seed = seed;
+    r.voxelRes = 48;
+    r.sky = 1.f;
+    r.params.set("reference.replicates", "1");
+    return r;
+}
+
 }  // namespace stab

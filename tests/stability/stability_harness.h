@@ -77,4 +77,8 @@ std::string fmt(double v, int digits = 3);
 vct::Scene cornerScene(float scale, glm::vec3 albedo = glm::vec3(0.6f), bool directionalLight = true);
 vct::Camera cornerCamera(float scale);
 
+// The cases' common request: size^2 pixels, 16 reference spp with one replicate, 48^3 voxels,
+// sky 1, the given seed.
+vct::RenderRequest baseRequest(const vct::Camera& camera, float radius, int size, uint32_t seed);
+
 }  // namespace stab

@@ -20,16 +20,7 @@ using namespace stab;
 namespace {
 
 RenderRequest requestFor(const Camera& camera, float radius, int size = 40) {
-    RenderRequest r;
-    r.width = r.height = size;
-    r.camera = camera;
-    r.radius = radius;
-    r.spp = 16;
-    r.seed = 11;
-    r.voxelRes = 48;
-    r.sky = 1.f;
-    r.params.set("reference.replicates", "1");
-    return r;
+    return baseRequest(camera, radius, size, 11);
 }
 
 using Outcomes = std::map<std::string, Outcome>;
