@@ -1,5 +1,7 @@
 #include "render/plan.h"
 
+#include "cone/cone_bounce.h"
+
 #include "render/voxel_region.h"
 
 #include <algorithm>
@@ -79,16 +81,27 @@ std::vector<PassDecl> declarePasses(const SceneFeatures& s, const RenderRequest&
     if (voxels) {
         d.push_back({"voxelize", {}, {"voxels"},
                      "world-space occupancy for cone tracing; " + voxelRegionExplanation(r)});
+        // Without lights or emission the voxels still carry sky light once it bounces between
+        // them (dense grid only: the vdb backend and clipmaps hold direct light only).
+        const bool skyBounces = r.gi == "vct" && r.sky > 0.f && r.backend != "vdb" && clipmapLevelCount(r) == 0 &&
+                                readVctBounces(r.params) > 0;
+        const bool radiance = r.gi == "vct" && (lights || s.hasEmission || skyBounces);
         if (r.gi != "vct")
             notApplicable["inject"] = "AO needs opacity only, not radiance (no --gi vct)";
+        else if (!radiance)
+            notApplicable["inject"] = "the scene has no lights and no emission, and no sky light bounces between "
+                                      "voxels (--sky 0, vct.bounces=0, --backend vdb or clipmaps): cones see the sky "
+                                      "directly";
         else if (!lights && !s.hasEmission)
-            notApplicable["inject"] = "the scene has no lights and no emission: the only light is the sky";
+            d.push_back({"inject", {"voxels"}, {"radiance"},
+                         "no lights or emission: empty direct light, then vct.bounces bounces of the sky light "
+                         "between the voxels (timed as 'bounce')"});
         else
             d.push_back({"inject", {"voxels"}, {"radiance"},
                          "direct light and emission into the voxels, then vct.bounces diffuse bounces between "
                          "them (dense grid; timed as 'bounce')"});
         std::vector<std::string> mipReads{"voxels"};
-        if (r.gi == "vct" && (lights || s.hasEmission)) mipReads.push_back("radiance");
+        if (radiance) mipReads.push_back("radiance");
         d.push_back({"mips", mipReads, {"voxel_mips"}, "filtered levels for wide cones"});
     } else {
         const std::string why = "no method reads voxels (--ao " + r.ao + ", --gi " + r.gi + ")";

@@ -60,12 +60,21 @@ TEST(Plan, SceneWithoutLightsOrEmissionRunsNoShadowOrInjection) {
     SceneFeatures dark = litScene();
     dark.lights = 0;
     dark.hasEmission = false;
-    RenderPlan p = planRender(dark, request("vct", "vct", {"beauty", "indirect"}));
+    RenderRequest noSky = request("vct", "vct", {"beauty", "indirect"});
+    noSky.sky = 0.f;
+    RenderPlan p = planRender(dark, noSky);
     EXPECT_FALSE(p.runs("shadow"));
     EXPECT_FALSE(p.runs("direct"));
     EXPECT_FALSE(p.runs("inject"));
     EXPECT_NE(reasonFor(p, "shadow").find("no punctual lights"), std::string::npos);
     EXPECT_TRUE(p.runs("cone_gi"));
+
+    // Under a sky the voxels carry its light once it bounces (default vct.bounces = 1) ...
+    EXPECT_TRUE(planRender(dark, request("vct", "vct", {"indirect"})).runs("inject"));
+    // ... unless nothing bounces.
+    RenderRequest noBounce = request("vct", "vct", {"indirect"});
+    noBounce.params.set("vct.bounces", "0");
+    EXPECT_FALSE(planRender(dark, noBounce).runs("inject"));
 
     SceneFeatures emissive = dark;
     emissive.hasEmission = true;
