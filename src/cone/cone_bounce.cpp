@@ -16,10 +16,14 @@ int readVctBounces(const ParamMap& params) {
                          "clipmaps inject direct light only)");
 }
 
+bool readVctBounceSky(const ParamMap& params) {
+    return params.getBool("vct.bounce.sky", true, "bounce cones that escape see the sky radiance");
+}
+
 void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, const ParamMap& params,
                        PassTimer& timer) {
     const int bounces = readVctBounces(params);
-    const bool bounceSky = params.getBool("vct.bounce.sky", true, "bounce cones that escape see the sky radiance");
+    const bool bounceSky = readVctBounceSky(params);
     if (bounces == 0) return;
     if (!grid.radiance || !grid.albedo || !grid.normal)
         throw std::invalid_argument("traceVoxelBounces: the grid has no injected radiance");

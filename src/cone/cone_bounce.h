@@ -25,6 +25,8 @@ constexpr int kDefaultVctBounces = 1;
 
 // Reads vct.bounces (range 0..8, default kDefaultVctBounces) with its --help-params line.
 int readVctBounces(const ParamMap& params);
+// Reads vct.bounce.sky (default 1) with its --help-params line.
+bool readVctBounceSky(const ParamMap& params);
 
 // Adds readVctBounces(params) bounces to grid.radiance (level 0; mips are rebuilt for each
 // gather and left stale afterwards: call buildMips next). `cone` is the pixel passes'

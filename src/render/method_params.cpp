@@ -31,6 +31,7 @@ void documentAllMethodParams() {
     referenceSettingsFromParams(empty);
     referencePixelAreaFromParams(empty);
     readVctBounces(empty);
+    readVctBounceSky(empty);
     empty.getInt("vct.view.level", 0, 0, 16, "mip level shown by voxel_* AOVs");
 }
 

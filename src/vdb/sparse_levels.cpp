@@ -176,7 +176,7 @@ SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject
     // Direct light only: an explicit request for bounces is refused, the default is not.
     const int requestedBounces = readVctBounces(params);
     const int bounces = params.has("vct.bounces") ? requestedBounces : 0;
-    params.getBool("vct.bounce.sky", true, "bounce cones that escape see the sky radiance");
+    readVctBounceSky(params);
     params.getChoice("vct.voxel.precision", "auto", {"auto", "half", "float"},
                      "storage of emission/radiance: half (RGBA16F, clamps at 65504), float (RGBA32F), "
                      "auto = float when emission or lights exceed the half range");
