@@ -19,11 +19,11 @@ void dispatchGrid(const glm::ivec3& size) {
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
-}  // namespace
-
 // GI grids filter their normals too: the facing test (vox_facingWeight) reads them at every
 // level the cones sample.
-bool filtersNormals(const VoxelGrid& grid) { return grid.radiance && grid.normal && textureLevelCount(grid.normal) >= grid.levels; }
+bool filtersNormals(const VoxelGrid& grid) {
+    return grid.radiance && grid.normal && textureLevelCount(grid.normal) >= grid.levels;
+}
 
 GlProgram buildIsotropicMipProgram(const VoxelGrid& grid) {
     ShaderDefines defines;
@@ -57,8 +57,6 @@ void buildIsotropicMips(VoxelGrid& grid, const GlProgram& program) {
     }
     glUseProgram(0);
 }
-
-namespace {
 
 struct AnisoPrograms {
     GlProgram first;  // pyramid level 1 from the base texture

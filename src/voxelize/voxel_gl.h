@@ -28,10 +28,4 @@ std::string glslImageFormat(GLenum internalFormat);
 // Largest finite value storable in the format ("65504.0" for half floats).
 std::string formatMaxLiteral(GLenum internalFormat);
 
-struct VoxelGrid;
-// Isotropic mip levels 1.. of opacity and (if present) radiance (mips.cpp); injection uses
-// them between bounces. Build the program once per grid format.
-GlProgram buildIsotropicMipProgram(const VoxelGrid& grid);
-void buildIsotropicMips(VoxelGrid& grid, const GlProgram& program);
-
 }  // namespace vct
