@@ -249,6 +249,9 @@ double meanAbsErrorTo(const Image& img, const Image& depth, double value) {
 }
 
 void recordCell(const std::string& caseName, const std::string& column, const Cell& cell) {
+    // Every recorded cell is also the test's assertion: a broken invariant (cellFor) or a
+    // failed case check fails the test, not only the report.
+    EXPECT_TRUE(cell.ok) << caseName << " / " << column << ": " << cell.text;
     ReportData& r = report();
     std::lock_guard<std::mutex> lock(r.mutex);
     touchCase(r, caseName);

@@ -64,6 +64,7 @@ struct Cell {
     std::string text;  // "pass", "0.031", "refused: ...", "FAIL: NaN in ao"
     bool ok = true;
 };
+// Records a cell of the report and fails the current test if the cell is not ok.
 void recordCell(const std::string& caseName, const std::string& column, const Cell& cell);
 void recordCaseInfo(const std::string& caseName, const std::string& what, const std::string& errorMeaning);
 void recordNote(const std::string& text);
