@@ -47,7 +47,6 @@ GlTexture traceClipmap(bool gi, const Clipmap& cm, const GBuffer& gbuffer, float
 
     const GLuint program = coneProgram(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl",
                                        {{"CONE_GI", gi ? "1" : "0"}, {"CONE_CLIPMAP", "1"}});
-    GlTexture out = createTexture2D(gi ? GL_RGBA32F : GL_R32F, gbuffer.width, gbuffer.height);
     GlBuffer ubo = bindConeUniforms(u);
     GlBuffer clipUbo = createBuffer(sizeof(c), &c, 0);
     glBindBufferBase(GL_UNIFORM_BUFFER, gpu::CLIPMAP_UBO_BINDING, clipUbo.id());
@@ -57,14 +56,7 @@ GlTexture traceClipmap(bool gi, const Clipmap& cm, const GBuffer& gbuffer, float
         const VoxelGrid& g = cm.levels[size_t(l)];
         glBindTextureUnit(GLuint(gpu::CLIPMAP_UNIT_LEVEL0 + l), gi ? g.radiance.id() : g.opacity.id());
     }
-    glBindImageTexture(gpu::CONE_IMAGE_OUTPUT, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
-                       gi ? GL_RGBA32F : GL_R32F);
-    glUseProgram(program);
-    glDispatchCompute(groupCount(gbuffer.width, gpu::CONE_LOCAL_SIZE),
-                      groupCount(gbuffer.height, gpu::CONE_LOCAL_SIZE), 1);
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                    GL_TEXTURE_UPDATE_BARRIER_BIT);
-    glUseProgram(0);
+    GlTexture out = dispatchPixelPass(program, gi, gbuffer);
     for (int l = 0; l < layout.levelCount; ++l) glBindTextureUnit(GLuint(gpu::CLIPMAP_UNIT_LEVEL0 + l), 0);
     return out;
 }

@@ -77,6 +77,19 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
     return bound;
 }
 
+GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer) {
+    const GLenum format = gi ? GL_RGBA32F : GL_R32F;
+    GlTexture out = createTexture2D(format, gbuffer.width, gbuffer.height);
+    glBindImageTexture(gpu::CONE_IMAGE_OUTPUT, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+    glUseProgram(program);
+    glDispatchCompute(groupCount(gbuffer.width, gpu::CONE_LOCAL_SIZE),
+                      groupCount(gbuffer.height, gpu::CONE_LOCAL_SIZE), 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                    GL_TEXTURE_UPDATE_BARRIER_BIT);
+    glUseProgram(0);
+    return out;
+}
+
 void checkGrid(const VoxelGrid& grid, const std::string& pass) {
     if (glm::any(glm::lessThan(grid.resolution, glm::ivec3(1))))
         throw std::invalid_argument(pass + ": voxel grid has no resolution");

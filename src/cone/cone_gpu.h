@@ -42,6 +42,10 @@ struct BoundConePass {
 BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffer, float maxDistWorld, float sky,
                            const ConeSettings& settings);
 
+// Runs a bound pixel pass: `program` over the G-buffer's pixels in CONE_LOCAL_SIZE tiles,
+// writing a new GL_RGBA32F (GI) or GL_R32F (AO) texture of the G-buffer's size.
+GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer);
+
 // Throws std::invalid_argument naming `pass` if the grid is not usable.
 void checkGrid(const VoxelGrid& grid, const std::string& pass);
 

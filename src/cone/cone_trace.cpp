@@ -31,18 +31,8 @@ GlTexture tracePass(ConeMode mode, const VoxelGrid& grid, const GBuffer& gbuffer
                     const ConeSettings& settings) {
     const bool gi = mode == ConeMode::GI;
     BoundConePass bound = bindConePass(gi, grid, gbuffer, maxDistWorld, sky, settings);
-    GLuint program = coneProgram(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl", bound.defines);
-    GlTexture out = createTexture2D(gi ? GL_RGBA32F : GL_R32F, gbuffer.width, gbuffer.height);
-    glBindImageTexture(gpu::CONE_IMAGE_OUTPUT, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
-                       gi ? GL_RGBA32F : GL_R32F);
-
-    glUseProgram(program);
-    glDispatchCompute(groupCount(gbuffer.width, gpu::CONE_LOCAL_SIZE),
-                      groupCount(gbuffer.height, gpu::CONE_LOCAL_SIZE), 1);
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                    GL_TEXTURE_UPDATE_BARRIER_BIT);
-    glUseProgram(0);
-    return out;
+    return dispatchPixelPass(coneProgram(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl", bound.defines), gi,
+                             gbuffer);
 }
 
 }  // namespace
