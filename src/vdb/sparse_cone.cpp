@@ -41,42 +41,46 @@ struct LevelSampler {
         }
     }
 
-    glm::vec3 sampleNormalLevel(const glm::vec3& p, int level) {
+    // Level texel coordinates of voxel-space p: GL texel centres (i + 0.5) / size_k, i.e.
+    // index p * size_k / res - 0.5.
+    openvdb::Vec3R levelCoord(const glm::vec3& p, int level) const {
         const glm::vec3 x = p * mp->levelScale[size_t(level)] - 0.5f;
-        const openvdb::Vec3s n =
-            openvdb::tools::BoxSampler::sample(*normal[size_t(level)], openvdb::Vec3R(x.x, x.y, x.z));
-        return glm::vec3(n[0], n[1], n[2]);
+        return openvdb::Vec3R(x.x, x.y, x.z);
     }
 
-    // cone_facing: vox_facingWeight of the occupied voxels' mean normal at the sample's level,
-    // the filtered normal over the filtered coverage (`coverage`: the opacity sample).
-    float facing(const glm::vec3& p, const glm::vec3& d, float lod, float coverage) {
+    // GL_LINEAR_MIPMAP_LINEAR across levels: atLevel(floor(lod)) blended with the next level.
+    template <class AtLevel>
+    auto acrossLevels(float lod, AtLevel atLevel) const {
         lod = std::clamp(lod, 0.f, mp->maxLod);
         const int l0 = int(std::floor(lod));
         const float f = lod - float(l0);
-        glm::vec3 n = sampleNormalLevel(p, l0);
-        if (f > 0.f && l0 + 1 <= int(mp->maxLod)) n = glm::mix(n, sampleNormalLevel(p, l0 + 1), f);
-        return gpu::vox_facingWeight(n / std::max(coverage, 1e-4f), d);
+        const auto s0 = atLevel(l0);
+        if (f <= 0.f || l0 + 1 > int(mp->maxLod)) return s0;
+        return glm::mix(s0, atLevel(l0 + 1), f);
     }
 
-    // Trilinear at one level: GL texel centres (i + 0.5) / size_k, i.e. index p * size_k / res - 0.5.
+    // Trilinear at one level.
     glm::vec4 sampleLevel(const glm::vec3& p, int level) {
-        const glm::vec3 x = p * mp->levelScale[size_t(level)] - 0.5f;
-        const openvdb::Vec3R xyz(x.x, x.y, x.z);
+        const openvdb::Vec3R xyz = levelCoord(p, level);
         const float a = openvdb::tools::BoxSampler::sample(*opacity[size_t(level)], xyz);
         if (radiance.empty()) return glm::vec4(0.f, 0.f, 0.f, a);
         const openvdb::Vec3s c = openvdb::tools::BoxSampler::sample(*radiance[size_t(level)], xyz);
         return glm::vec4(c[0], c[1], c[2], a);
     }
 
-    // textureLod with GL_LINEAR_MIPMAP_LINEAR: blend of floor(lod) and the next level.
+    // textureLod: premultiplied radiance (GI) and opacity at footprint 2^lod.
     glm::vec4 sample(const glm::vec3& p, float lod) {
-        lod = std::clamp(lod, 0.f, mp->maxLod);
-        const int l0 = int(std::floor(lod));
-        const float f = lod - float(l0);
-        const glm::vec4 s0 = sampleLevel(p, l0);
-        if (f <= 0.f || l0 + 1 > int(mp->maxLod)) return s0;
-        return glm::mix(s0, sampleLevel(p, l0 + 1), f);
+        return acrossLevels(lod, [&](int level) { return sampleLevel(p, level); });
+    }
+
+    // cone_facing: vox_facingWeight of the occupied voxels' mean normal at the sample's level,
+    // the filtered normal over the filtered coverage (`coverage`: the opacity sample).
+    float facing(const glm::vec3& p, const glm::vec3& d, float lod, float coverage) {
+        const glm::vec3 n = acrossLevels(lod, [&](int level) {
+            const openvdb::Vec3s v = openvdb::tools::BoxSampler::sample(*normal[size_t(level)], levelCoord(p, level));
+            return glm::vec3(v[0], v[1], v[2]);
+        });
+        return gpu::vox_facingWeight(n / std::max(coverage, 1e-4f), d);
     }
 };
 
