@@ -20,6 +20,13 @@ bool readVctBounceSky(const ParamMap& params) {
     return params.getBool("vct.bounce.sky", true, "bounce cones that escape see the sky radiance");
 }
 
+void refuseVctBounces(const ParamMap& params, bool injects, const std::string& where) {
+    const int bounces = readVctBounces(params);
+    if (injects && params.has("vct.bounces") && bounces > 0)
+        throw std::invalid_argument(where + ": vct.bounces = " + std::to_string(bounces) +
+                                    " is not supported (direct light only; use vct.bounces=0)");
+}
+
 void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, const ParamMap& params,
                        PassTimer& timer) {
     const int bounces = readVctBounces(params);
@@ -41,7 +48,7 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
     GlTexture next = createTexture3D(format, res.x, res.y, res.z);
     glCopyImageSubData(grid.radiance.id(), GL_TEXTURE_3D, 0, 0, 0, 0, direct.id(), GL_TEXTURE_3D, 0, 0, 0, 0, res.x,
                        res.y, res.z);
-    const gpu::ConeUniforms u = coneUniforms(true, grid, 2.f * diagonal, bounceSky ? sky : 0.f, cone);
+    GlBuffer ubo = bindConeUniforms(coneUniforms(true, grid, 2.f * diagonal, bounceSky ? sky : 0.f, cone));
     const uint32_t zero = 0;
     GlBuffer list = createBuffer(sizeof(uint32_t) * (1 + size_t(res.x) * res.y * res.z), nullptr,
                                  GL_DYNAMIC_STORAGE_BIT);
@@ -49,8 +56,8 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_VOXEL_LIST, list.id());
     uint32_t listed = 0;
     for (int i = 0; i < bounces; ++i) {
+        // The mips (and the directional textures, rebuilt anew) of the previous total.
         buildMips(grid, cone.anisotropic, mipsTimer, "bounce_mips");
-        GlBuffer ubo = bindConeUniforms(u);
         ShaderDefines defines = bindGridTextures(true, grid, cone);
         defines.push_back({"RADIANCE_FORMAT", glslImageFormat(format)});
         defines.push_back({"RADIANCE_FORMAT_MAX", formatMaxLiteral(format)});

@@ -15,6 +15,8 @@
 #include "render/timing.h"
 #include "voxelize/voxel_grid.h"
 
+#include <string>
+
 namespace vct {
 
 // Default of vct.bounces. One extra bounce: the reference's paths carry several. Cornell box
@@ -27,6 +29,11 @@ constexpr int kDefaultVctBounces = 1;
 int readVctBounces(const ParamMap& params);
 // Reads vct.bounce.sky (default 1) with its --help-params line.
 bool readVctBounceSky(const ParamMap& params);
+
+// For volumes that hold direct light only (the vdb backend, clipmaps): reads vct.bounces
+// and, when the volume `injects`, refuses an explicit request for bounces with
+// std::invalid_argument naming `where`. The default is not a request.
+void refuseVctBounces(const ParamMap& params, bool injects, const std::string& where);
 
 // Adds readVctBounces(params) bounces to grid.radiance (level 0; mips are rebuilt for each
 // gather and left stale afterwards: call buildMips next). `cone` is the pixel passes'

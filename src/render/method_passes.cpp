@@ -224,10 +224,8 @@ VoxelVolume voxelGridFor(const RenderPlan& plan, const RenderRequest& r, const S
     GlContext& gl = GlContext::shared();
     if (levels > 0 && !v.clipmap) {
         // Bounce cones would run inside one level and take its border for the sky: clipmap
-        // levels hold direct light only. An explicit request for bounces is refused.
-        if (inject && r.params.has("vct.bounces") && readVctBounces(r.params) > 0)
-            throw std::invalid_argument("vct.clipmap.levels: vct.bounces = " + r.params.values().at("vct.bounces") +
-                                        " is not supported on clipmaps (use vct.bounces=0)");
+        // levels hold direct light only.
+        refuseVctBounces(r.params, inject, "vct.clipmap.levels");
         const ClipmapLayout layout = computeClipmapLayout(region.bounds, r.camera.eye, levels, r.voxelRes);
         v.clipmap = std::make_shared<Clipmap>(buildClipmap(gpu, scene, layout, inject, r.params, timer));
         gl.checkErrors("clipmap");

@@ -173,16 +173,11 @@ SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject
         throw std::invalid_argument("buildSparseVoxels: sky radiance must be finite and >= 0");
     const float offset = params.getFloat("vct.inject.offset", 2.f, 0.f, 16.f,
                                          "voxels along the normal where shadow rays of injection start");
-    // Direct light only: an explicit request for bounces is refused, the default is not.
-    const int requestedBounces = readVctBounces(params);
-    const int bounces = params.has("vct.bounces") ? requestedBounces : 0;
+    refuseVctBounces(params, inject, "--backend vdb");  // the sparse path injects direct light only
     readVctBounceSky(params);
     params.getChoice("vct.voxel.precision", "auto", {"auto", "half", "float"},
                      "storage of emission/radiance: half (RGBA16F, clamps at 65504), float (RGBA32F), "
                      "auto = float when emission or lights exceed the half range");
-    if (inject && bounces > 0)
-        throw std::invalid_argument("--backend vdb: vct.bounces = " + std::to_string(bounces) +
-                                    " is not supported (the sparse path injects direct light only)");
     SparseVoxelScene voxels = voxelizeSparse(scene, voxelRes);
     if (inject) injectSparseRadiance(voxels, scene, offset);
     buildSparseLevels(voxels);
