@@ -37,6 +37,7 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
     if (!(sky >= 0.f) || !std::isfinite(sky))
         throw std::invalid_argument("traceVoxelBounces: sky radiance must be finite and >= 0");
     cone.validate();
+    if (grid.occupiedVoxels == 0) return;  // nothing gathers
 
     const glm::ivec3 res = grid.resolution;
     const GLenum format = textureInternalFormat(grid.radiance.id());
@@ -50,8 +51,9 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
                        res.y, res.z);
     GlBuffer ubo = bindConeUniforms(coneUniforms(true, grid, 2.f * diagonal, bounceSky ? sky : 0.f, cone));
     const uint32_t zero = 0;
-    GlBuffer list = createBuffer(sizeof(uint32_t) * (1 + size_t(res.x) * res.y * res.z), nullptr,
-                                 GL_DYNAMIC_STORAGE_BIT);
+    // Gathering voxels are occupied ones: the list needs no more room than voxelization counted
+    // (a whole-grid list would be 512 MB at 512^3).
+    GlBuffer list = createBuffer(sizeof(uint32_t) * (1 + grid.occupiedVoxels), nullptr, GL_DYNAMIC_STORAGE_BIT);
     glNamedBufferSubData(list.id(), 0, sizeof(zero), &zero);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_VOXEL_LIST, list.id());
     uint32_t listed = 0;
