@@ -21,11 +21,12 @@
 // 128^3 RGBA16F mipmapped texture (GL_LINEAR_MIPMAP_LINEAR, as the grid).
 #include "cone/cone_bounce.h"
 #include "cone/cone_gpu.h"
+#include "cone/cone_programs.h"
 #include "cone/cone_set.h"
 #include "cone/cone_settings.h"
 #include "eval/metrics.h"
 #include "gl/context.h"
-#include "gl/program.h"
+#include "gl/program_cache.h"
 #include "gl/readback.h"
 #include "raster/gbuffer_pass.h"
 #include "render/gpu_scene.h"
@@ -141,13 +142,13 @@ CountedPass countConeFetches(bool gi, const VoxelGrid& grid, const GBuffer& gbuf
     const float diagonal = glm::length(glm::vec3(grid.resolution)) * grid.voxelSize;
     conedetail::BoundConePass bound =
         conedetail::bindConePass(gi, grid, gbuffer, gi ? 2.f * diagonal : radius, sky, readConeSettings(params));
-    GlProgram program = buildComputeProgram("bench/cone_count.glsl", bound.defines);
+    const GLuint program = cachedProgram(coneCountProgramKey(gi, bound.aniso));
     CountedPass out;
     GlTexture value = createTexture2D(GL_RGBA32F, gbuffer.width, gbuffer.height);
     out.counts = createTexture2D(GL_R32UI, gbuffer.width, gbuffer.height);
     glBindImageTexture(0, value.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(1, out.counts.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
-    glUseProgram(program.id());
+    glUseProgram(program);
     glDispatchCompute(groupCount(gbuffer.width, gpu::CONE_LOCAL_SIZE), groupCount(gbuffer.height, gpu::CONE_LOCAL_SIZE),
                       1);
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
@@ -184,14 +185,14 @@ GlTexture makeFetchVolume(int size) {
 // Median wall time (ms, after glFinish) of the bare fetch shader doing `counts` fetches per pixel.
 double timeBareFetches(const GlTexture& volume, int volumeSize, const GlTexture& counts, int width, int height,
                        int runs) {
-    static GlProgram program = buildComputeProgram("bench/fetch.glsl");
+    const GLuint program = cachedProgram(fetchBenchProgramKey());
     GlTexture out = createTexture2D(GL_R32F, width, height);
     int maxLod = 0;
     while ((volumeSize >> (maxLod + 1)) > 0) ++maxLod;
     std::vector<double> ms;
     for (int run = 0; run <= runs; ++run) {  // run 0 warms up
-        glUseProgram(program.id());
-        glProgramUniform4i(program.id(), 0, width, height, volumeSize, maxLod);
+        glUseProgram(program);
+        glProgramUniform4i(program, 0, width, height, volumeSize, maxLod);
         glBindTextureUnit(0, volume.id());
         glBindImageTexture(1, counts.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
         glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);

@@ -28,11 +28,15 @@ bool bounce_gathers(ivec3 v) {
 // Pass 1: the voxels that gather, in a list, so pass 2 runs one invocation per such voxel
 // (on SIMD hardware a 4^3 block of the grid holds few surface voxels, and every lane of a
 // block would wait for the longest march). Order is arbitrary; each voxel's result is not.
+// One list per slab of z slices [uSlab.x, uSlab.y), so no list outgrows the 128 MiB of a
+// storage buffer binding that GL guarantees.
 layout(local_size_x = VOX_GRID_GROUP, local_size_y = VOX_GRID_GROUP, local_size_z = VOX_GRID_GROUP) in;
 
+uniform ivec2 uSlab;
+
 void main() {
-    ivec3 v = ivec3(gl_GlobalInvocationID);
-    if (any(greaterThanEqual(v, ivec3(u.gridResolution.xyz))) || !bounce_gathers(v)) return;
+    ivec3 v = ivec3(gl_GlobalInvocationID) + ivec3(0, 0, uSlab.x);
+    if (any(greaterThanEqual(v, ivec3(u.gridResolution.xy, uSlab.y))) || !bounce_gathers(v)) return;
     listVoxels[atomicAdd(listCount, 1u)] = uint(v.x) | (uint(v.y) << 10) | (uint(v.z) << 20);
 }
 #else

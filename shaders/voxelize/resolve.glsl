@@ -5,27 +5,28 @@
 
 layout(local_size_x = VOX_GRID_GROUP, local_size_y = VOX_GRID_GROUP, local_size_z = VOX_GRID_GROUP) in;
 
-layout(r32ui, binding = VOX_UNIT_ALBEDO + 0) uniform readonly uimage3D accAlbedoR;
-layout(r32ui, binding = VOX_UNIT_ALBEDO + 1) uniform readonly uimage3D accAlbedoG;
-layout(r32ui, binding = VOX_UNIT_ALBEDO + 2) uniform readonly uimage3D accAlbedoB;
-layout(r32ui, binding = VOX_UNIT_NORMAL + 0) uniform readonly uimage3D accNormalX;
-layout(r32ui, binding = VOX_UNIT_NORMAL + 1) uniform readonly uimage3D accNormalY;
-layout(r32ui, binding = VOX_UNIT_NORMAL + 2) uniform readonly uimage3D accNormalZ;
-layout(r32ui, binding = VOX_UNIT_WEIGHT) uniform readonly uimage3D accWeight;
+// The accumulators are read through texture units (texelFetch; 13 of the 16 guaranteed per
+// stage), so the only images are the four outputs: GL guarantees 8 image units.
+layout(binding = VOX_ACC_ALBEDO + 0) uniform usampler3D accAlbedoR;
+layout(binding = VOX_ACC_ALBEDO + 1) uniform usampler3D accAlbedoG;
+layout(binding = VOX_ACC_ALBEDO + 2) uniform usampler3D accAlbedoB;
+layout(binding = VOX_ACC_NORMAL + 0) uniform usampler3D accNormalX;
+layout(binding = VOX_ACC_NORMAL + 1) uniform usampler3D accNormalY;
+layout(binding = VOX_ACC_NORMAL + 2) uniform usampler3D accNormalZ;
+layout(binding = VOX_ACC_WEIGHT) uniform usampler3D accWeight;
 #ifdef HAS_EMISSION
-layout(r32ui, binding = VOX_UNIT_EMISSION + 0) uniform readonly uimage3D accEmissionRLo;
-layout(r32ui, binding = VOX_UNIT_EMISSION + 1) uniform readonly uimage3D accEmissionRHi;
-layout(r32ui, binding = VOX_UNIT_EMISSION + 2) uniform readonly uimage3D accEmissionGLo;
-layout(r32ui, binding = VOX_UNIT_EMISSION + 3) uniform readonly uimage3D accEmissionGHi;
-layout(r32ui, binding = VOX_UNIT_EMISSION + 4) uniform readonly uimage3D accEmissionBLo;
-layout(r32ui, binding = VOX_UNIT_EMISSION + 5) uniform readonly uimage3D accEmissionBHi;
+layout(binding = VOX_ACC_EMISSION + 0) uniform usampler3D accEmissionRLo;
+layout(binding = VOX_ACC_EMISSION + 1) uniform usampler3D accEmissionRHi;
+layout(binding = VOX_ACC_EMISSION + 2) uniform usampler3D accEmissionGLo;
+layout(binding = VOX_ACC_EMISSION + 3) uniform usampler3D accEmissionGHi;
+layout(binding = VOX_ACC_EMISSION + 4) uniform usampler3D accEmissionBLo;
+layout(binding = VOX_ACC_EMISSION + 5) uniform usampler3D accEmissionBHi;
 #endif
 
-// Output units 13..16 (after the accumulators).
-layout(r16f, binding = 13) uniform writeonly image3D outOpacity;
-layout(rgba16f, binding = 14) uniform writeonly image3D outAlbedo;
-layout(rgba16f, binding = 15) uniform writeonly image3D outNormal;
-layout(EMISSION_FORMAT, binding = 16) uniform writeonly image3D outEmission;
+layout(r16f, binding = VOX_IMAGE_RESOLVE_OPACITY) uniform writeonly image3D outOpacity;
+layout(rgba16f, binding = VOX_IMAGE_RESOLVE_ALBEDO) uniform writeonly image3D outAlbedo;
+layout(rgba16f, binding = VOX_IMAGE_RESOLVE_NORMAL) uniform writeonly image3D outNormal;
+layout(EMISSION_FORMAT, binding = VOX_IMAGE_RESOLVE_EMISSION) uniform writeonly image3D outEmission;
 
 layout(std430, binding = VOX_BINDING_BIGLIST) buffer BigList {
     uvec4 bigHeader;  // w = occupied voxels
@@ -48,7 +49,7 @@ float vox_emission(uint lo, uint hi, float weight) {
 void main() {
     ivec3 v = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(v, uResolution))) return;
-    uint w = imageLoad(accWeight, v).r;
+    uint w = texelFetch(accWeight, v, 0).r;
     if (w == 0u) {
         imageStore(outOpacity, v, vec4(0.0));
         imageStore(outAlbedo, v, vec4(0.0));
@@ -58,19 +59,19 @@ void main() {
     }
     atomicAdd(bigHeader.w, 1u);
     float weight = float(w);
-    vec3 albedo = vec3(imageLoad(accAlbedoR, v).r, imageLoad(accAlbedoG, v).r, imageLoad(accAlbedoB, v).r) /
+    vec3 albedo = vec3(texelFetch(accAlbedoR, v, 0).r, texelFetch(accAlbedoG, v, 0).r, texelFetch(accAlbedoB, v, 0).r) /
                   (weight * VOX_ALBEDO_SCALE);
-    vec3 n = vec3(int(imageLoad(accNormalX, v).r), int(imageLoad(accNormalY, v).r),
-                  int(imageLoad(accNormalZ, v).r));
+    vec3 n = vec3(int(texelFetch(accNormalX, v, 0).r), int(texelFetch(accNormalY, v, 0).r),
+                  int(texelFetch(accNormalZ, v, 0).r));
     float len = length(n);
     // Normals that cancel (both faces of a thin wall in one voxel) are stored as zero:
     // injection then treats the voxel as facing every light.
     n = len > 1e-3 * weight * VOX_NORMAL_SCALE ? n / len : vec3(0.0);
     vec3 e = vec3(0.0);
 #ifdef HAS_EMISSION
-    e = vec3(vox_emission(imageLoad(accEmissionRLo, v).r, imageLoad(accEmissionRHi, v).r, weight),
-             vox_emission(imageLoad(accEmissionGLo, v).r, imageLoad(accEmissionGHi, v).r, weight),
-             vox_emission(imageLoad(accEmissionBLo, v).r, imageLoad(accEmissionBHi, v).r, weight));
+    e = vec3(vox_emission(texelFetch(accEmissionRLo, v, 0).r, texelFetch(accEmissionRHi, v, 0).r, weight),
+             vox_emission(texelFetch(accEmissionGLo, v, 0).r, texelFetch(accEmissionGHi, v, 0).r, weight),
+             vox_emission(texelFetch(accEmissionBLo, v, 0).r, texelFetch(accEmissionBHi, v, 0).r, weight));
 #endif
     imageStore(outOpacity, v, vec4(1.0));
     imageStore(outAlbedo, v, vec4(albedo, 1.0));

@@ -11,6 +11,13 @@
 // Modes (define BIG_PASS): the small pass runs one invocation per triangle and defers
 // triangles with many columns to a list; the big pass runs one work group per listed
 // triangle, its invocations striding over the columns.
+//
+// Accumulators (define EMISSION_PASS): OpenGL guarantees only 8 image uniforms per stage,
+// so the 13 fixed-point sums are written by two passes over the triangles: the geometry
+// pass (albedo, normal, weight: 7 images) and, for scenes with emission, the emission pass
+// (three 64-bit sums: 6 images), which skips every triangle whose material emits nothing
+// (its contribution is exactly zero) and reads the weights of the geometry pass at resolve.
+// Integer sums are order-independent, so the split leaves every voxel's value unchanged.
 #include "common/scene.glsl"
 #include "voxelize/voxelize_shared.h"
 
@@ -20,20 +27,21 @@ layout(local_size_x = VOX_BIG_GROUP) in;
 layout(local_size_x = VOX_TRI_GROUP) in;
 #endif
 
-layout(r32ui, binding = VOX_UNIT_ALBEDO + 0) uniform coherent uimage3D accAlbedoR;
-layout(r32ui, binding = VOX_UNIT_ALBEDO + 1) uniform coherent uimage3D accAlbedoG;
-layout(r32ui, binding = VOX_UNIT_ALBEDO + 2) uniform coherent uimage3D accAlbedoB;
-layout(r32ui, binding = VOX_UNIT_NORMAL + 0) uniform coherent uimage3D accNormalX;
-layout(r32ui, binding = VOX_UNIT_NORMAL + 1) uniform coherent uimage3D accNormalY;
-layout(r32ui, binding = VOX_UNIT_NORMAL + 2) uniform coherent uimage3D accNormalZ;
-layout(r32ui, binding = VOX_UNIT_WEIGHT) uniform coherent uimage3D accWeight;
-#ifdef HAS_EMISSION
-layout(r32ui, binding = VOX_UNIT_EMISSION + 0) uniform coherent uimage3D accEmissionRLo;
-layout(r32ui, binding = VOX_UNIT_EMISSION + 1) uniform coherent uimage3D accEmissionRHi;
-layout(r32ui, binding = VOX_UNIT_EMISSION + 2) uniform coherent uimage3D accEmissionGLo;
-layout(r32ui, binding = VOX_UNIT_EMISSION + 3) uniform coherent uimage3D accEmissionGHi;
-layout(r32ui, binding = VOX_UNIT_EMISSION + 4) uniform coherent uimage3D accEmissionBLo;
-layout(r32ui, binding = VOX_UNIT_EMISSION + 5) uniform coherent uimage3D accEmissionBHi;
+#ifdef EMISSION_PASS
+layout(r32ui, binding = 0) uniform coherent uimage3D accEmissionRLo;
+layout(r32ui, binding = 1) uniform coherent uimage3D accEmissionRHi;
+layout(r32ui, binding = 2) uniform coherent uimage3D accEmissionGLo;
+layout(r32ui, binding = 3) uniform coherent uimage3D accEmissionGHi;
+layout(r32ui, binding = 4) uniform coherent uimage3D accEmissionBLo;
+layout(r32ui, binding = 5) uniform coherent uimage3D accEmissionBHi;
+#else
+layout(r32ui, binding = VOX_ACC_ALBEDO + 0) uniform coherent uimage3D accAlbedoR;
+layout(r32ui, binding = VOX_ACC_ALBEDO + 1) uniform coherent uimage3D accAlbedoG;
+layout(r32ui, binding = VOX_ACC_ALBEDO + 2) uniform coherent uimage3D accAlbedoB;
+layout(r32ui, binding = VOX_ACC_NORMAL + 0) uniform coherent uimage3D accNormalX;
+layout(r32ui, binding = VOX_ACC_NORMAL + 1) uniform coherent uimage3D accNormalY;
+layout(r32ui, binding = VOX_ACC_NORMAL + 2) uniform coherent uimage3D accNormalZ;
+layout(r32ui, binding = VOX_ACC_WEIGHT) uniform coherent uimage3D accWeight;
 #endif
 
 layout(std430, binding = VOX_BINDING_BIGLIST) buffer BigList {
@@ -135,7 +143,7 @@ vec3 vox_barycentrics(Tri tri, vec3 q) {
     return b / (b.x + b.y + b.z);
 }
 
-#ifdef HAS_EMISSION
+#ifdef EMISSION_PASS
 // Adds `x` >= 0 (< 2^56) to the 64-bit integer (hi, lo): exact, so the sum is independent
 // of the order in which triangles arrive.
 void vox_add64(int channel, ivec3 v, float x) {
@@ -160,11 +168,16 @@ void vox_accumulate(Tri tri, ivec3 v) {
     vec4 base = scene_baseColor(tri.material, uv, tri.lod);
     GpuMaterial m = sceneMaterials[tri.material];
     if ((m.flags & MATERIAL_ALPHA_MASK) != 0 && base.a < m.alphaCutoff) return;
+    uint w = tri.weight;
+#ifdef EMISSION_PASS
+    vec3 e = clamp(scene_emission(tri.material, uv, tri.lod), 0.0, VOX_EMISSION_MAX);
+    for (int c = 0; c < 3; ++c)
+        if (e[c] > 0.0) vox_add64(c, v, e[c] * float(w) * VOX_EMISSION_SCALE);
+#else
     vec3 n = b.x * tri.n[0] + b.y * tri.n[1] + b.z * tri.n[2];
     float len = length(n);
     float faceLen = length(tri.faceN);
     n = len > 1e-6 ? n / len : (faceLen > 0.0 ? tri.faceN / faceLen : vec3(0.0));
-    uint w = tri.weight;
     uvec3 a = uvec3(round(clamp(base.rgb, 0.0, 1.0) * VOX_ALBEDO_SCALE)) * w;
     ivec3 q = ivec3(round(clamp(n, -1.0, 1.0) * VOX_NORMAL_SCALE)) * int(w);
     imageAtomicAdd(accAlbedoR, v, a.r);
@@ -174,10 +187,6 @@ void vox_accumulate(Tri tri, ivec3 v) {
     imageAtomicAdd(accNormalY, v, uint(q.y));
     imageAtomicAdd(accNormalZ, v, uint(q.z));
     imageAtomicAdd(accWeight, v, w);
-#ifdef HAS_EMISSION
-    vec3 e = clamp(scene_emission(tri.material, uv, tri.lod), 0.0, VOX_EMISSION_MAX);
-    for (int c = 0; c < 3; ++c)
-        if (e[c] > 0.0) vox_add64(c, v, e[c] * float(w) * VOX_EMISSION_SCALE);
 #endif
 }
 
@@ -223,6 +232,10 @@ void main() {
 #else
     uint t = gl_GlobalInvocationID.x;
     if (t >= uTriangleCount) return;
+#ifdef EMISSION_PASS
+    // A material without an emissive factor adds exactly zero to every emission sum.
+    if (all(equal(sceneMaterials[sceneTriMaterial[t]].emissive.rgb, vec3(0.0)))) return;
+#endif
     Tri tri = vox_loadTriangle(t);
     if (!vox_insideGrid(tri)) return;
     int columns = vox_columnCount(tri);

@@ -21,11 +21,21 @@ VCT_CONST int VOX_BIG_GROUP = 64;
 VCT_CONST int VOX_SMALL_COLUMNS = 48;
 VCT_CONST int VOX_GRID_GROUP = 4;   // 4x4x4 for per-voxel passes (resolve, inject, mips)
 
-// Image units of the accumulators (r32ui) written by voxelize.glsl and read by resolve.glsl.
-VCT_CONST int VOX_UNIT_ALBEDO = 0;     // 3 images: r, g, b
-VCT_CONST int VOX_UNIT_NORMAL = 3;     // 3 images: x, y, z (two's complement sums)
-VCT_CONST int VOX_UNIT_WEIGHT = 6;     // 1 image: sum of weights
-VCT_CONST int VOX_UNIT_EMISSION = 7;   // 6 images: r lo, r hi, g lo, g hi, b lo, b hi
+// The 13 fixed-point accumulators (r32ui 3D textures), by index: albedo r, g, b; normal x,
+// y, z (two's complement sums); the sum of weights; emission r lo, r hi, g lo, g hi, b lo,
+// b hi. GL guarantees 8 image units, so no pass binds them all as images: the geometry pass
+// of voxelize.glsl binds accumulator k at image unit k (k < VOX_ACC_EMISSION), its emission
+// pass binds k at image unit k - VOX_ACC_EMISSION, and resolve.glsl reads every k through
+// texture unit k (texelFetch), writing its outputs to the image units below.
+VCT_CONST int VOX_ACC_ALBEDO = 0;
+VCT_CONST int VOX_ACC_NORMAL = 3;
+VCT_CONST int VOX_ACC_WEIGHT = 6;
+VCT_CONST int VOX_ACC_EMISSION = 7;
+VCT_CONST int VOX_ACC_COUNT = 13;
+VCT_CONST int VOX_IMAGE_RESOLVE_OPACITY = 0;
+VCT_CONST int VOX_IMAGE_RESOLVE_ALBEDO = 1;
+VCT_CONST int VOX_IMAGE_RESOLVE_NORMAL = 2;
+VCT_CONST int VOX_IMAGE_RESOLVE_EMISSION = 3;
 
 // Storage binding of the big-triangle list: uvec4 header {listed triangles, -, -, occupied
 // voxel count}, then triangle ids.

@@ -24,7 +24,7 @@ GlTexture runAlchemy(const AoPassContext& ctx, const AlchemySettings& settings) 
     GlBuffer block = uploadUniformBlock(u, gpu::AO_BINDING_TECHNIQUE);
     bindAoPassInputs(ctx);
     GlTexture out = createAoTexture(ctx.evalWidth, ctx.evalHeight);
-    dispatchAoPass(aoProgram("ao/alchemy.glsl"), out, ctx.evalWidth, ctx.evalHeight);
+    dispatchAoPass(cachedProgram(computeProgramKey("ao/alchemy.glsl")), out, ctx.evalWidth, ctx.evalHeight);
     return out;
 }
 

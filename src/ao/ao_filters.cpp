@@ -46,7 +46,7 @@ GlTexture runBilateralBlur(const AoPassContext& ctx, const GlTexture& ao, const 
     gpu::BlurUniforms u{};
     std::vector<float> weights = bilateralGaussianWeights(settings.radius, settings.sigma);
     for (size_t i = 0; i < weights.size(); ++i) u.weights[i / 4][int(i % 4)] = weights[i];
-    GLuint program = aoProgram("ao/bilateral_blur.glsl");
+    GLuint program = cachedProgram(computeProgramKey("ao/bilateral_blur.glsl"));
     bindAoPassInputs(ctx);
 
     GlTexture current;
@@ -70,7 +70,7 @@ GlTexture runBoxBlur(const AoPassContext& ctx, const GlTexture& ao) {
     bindAoPassInputs(ctx);
     glBindTextureUnit(gpu::AO_UNIT_INPUT, ao.id());
     GlTexture out = createAoTexture(ctx.evalWidth, ctx.evalHeight);
-    dispatchAoPass(aoProgram("ao/box_blur.glsl"), out, ctx.evalWidth, ctx.evalHeight);
+    dispatchAoPass(cachedProgram(computeProgramKey("ao/box_blur.glsl")), out, ctx.evalWidth, ctx.evalHeight);
     glBindTextureUnit(gpu::AO_UNIT_INPUT, 0);
     return out;
 }
@@ -84,7 +84,7 @@ GlTexture runDepthAwareUpsample(const AoPassContext& ctx, const GlTexture& ao, c
     glBindTextureUnit(gpu::AO_UNIT_INPUT, ao.id());
     int width = ctx.gbuffer->width, height = ctx.gbuffer->height;
     GlTexture out = createAoTexture(width, height);
-    dispatchAoPass(aoProgram("ao/upsample.glsl"), out, width, height);
+    dispatchAoPass(cachedProgram(computeProgramKey("ao/upsample.glsl")), out, width, height);
     glBindTextureUnit(gpu::AO_UNIT_INPUT, 0);
     return out;
 }

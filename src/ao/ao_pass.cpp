@@ -2,7 +2,6 @@
 
 #include "ao/ao_random.h"
 
-#include <map>
 #include <stdexcept>
 
 namespace vct {
@@ -48,14 +47,12 @@ void bindAoPassInputs(const AoPassContext& ctx) {
     glBindTextureUnit(gpu::AO_UNIT_ALBEDO, ctx.gbuffer->albedo.id());
 }
 
-GLuint aoProgram(const std::string& shader, const ShaderDefines& defines) {
-    // One GL context per process (GlContext::shared), so one cache per process.
-    static std::map<std::string, GlProgram> cache;
-    std::string key = shader;
-    for (const auto& [k, v] : defines) key += "|" + k + "=" + v;
-    auto it = cache.find(key);
-    if (it == cache.end()) it = cache.emplace(key, buildComputeProgram(shader, defines)).first;
-    return it->second.id();
+std::vector<ProgramKey> screenSpaceAoProgramVariants() {
+    std::vector<ProgramKey> keys;
+    for (const char* shader : {"ao/ssao.glsl", "ao/horizon.glsl", "ao/alchemy.glsl", "ao/hbao.glsl", "ao/gtao.glsl",
+                               "ao/bilateral_blur.glsl", "ao/box_blur.glsl", "ao/upsample.glsl"})
+        keys.push_back(computeProgramKey(shader));
+    return keys;
 }
 
 GlTexture createAoTexture(int width, int height) { return createTexture2D(GL_R32F, width, height); }

@@ -1,15 +1,16 @@
-// Plumbing shared by the screen-space AO passes: the per-view uniform block, the program
-// cache, R32F textures and the dispatch of one 2D compute pass.
+// Plumbing shared by the screen-space AO passes: the per-view uniform block, the list of
+// their programs, R32F textures and the dispatch of one 2D compute pass.
 #pragma once
 
 #include "ao/ao_shared.h"
 #include "gl/handles.h"
-#include "gl/program.h"
+#include "gl/program_cache.h"
 #include "render/gbuffer.h"
 #include "render/view.h"
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace vct {
 
@@ -32,8 +33,8 @@ AoPassContext makeAoPassContext(const GBuffer& gbuffer, const View& view, float 
 // Binds the view block and the G-buffer textures the AO shaders read (position, normal, albedo).
 void bindAoPassInputs(const AoPassContext& ctx);
 
-// Programs compiled once per process, keyed by shader name and defines.
-GLuint aoProgram(const std::string& shader, const ShaderDefines& defines = {});
+// Every program of the screen-space AO passes (none has variants: each is one shader).
+std::vector<ProgramKey> screenSpaceAoProgramVariants();
 
 GlTexture createAoTexture(int width, int height);  // R32F, nearest, clamp to edge
 

@@ -48,7 +48,7 @@ GlTexture runGtao(const AoPassContext& ctx, const GtaoSettings& settings, bool f
     GlBuffer block = uploadUniformBlock(u, gpu::AO_BINDING_TECHNIQUE);
     bindAoPassInputs(ctx);
     GlTexture out = createAoTexture(ctx.evalWidth, ctx.evalHeight);
-    dispatchAoPass(aoProgram("ao/gtao.glsl"), out, ctx.evalWidth, ctx.evalHeight);
+    dispatchAoPass(cachedProgram(computeProgramKey("ao/gtao.glsl")), out, ctx.evalWidth, ctx.evalHeight);
     return out;
 }
 

@@ -18,7 +18,7 @@ GlTexture runHbao(const AoPassContext& ctx, const HbaoSettings& settings) {
     GlBuffer block = uploadUniformBlock(u, gpu::AO_BINDING_TECHNIQUE);
     bindAoPassInputs(ctx);
     GlTexture out = createAoTexture(ctx.evalWidth, ctx.evalHeight);
-    dispatchAoPass(aoProgram("ao/hbao.glsl"), out, ctx.evalWidth, ctx.evalHeight);
+    dispatchAoPass(cachedProgram(computeProgramKey("ao/hbao.glsl")), out, ctx.evalWidth, ctx.evalHeight);
     return out;
 }
 

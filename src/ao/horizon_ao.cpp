@@ -17,7 +17,7 @@ GlTexture runHorizonAo(const AoPassContext& ctx, const HorizonSettings& settings
     GlBuffer block = uploadUniformBlock(u, gpu::AO_BINDING_TECHNIQUE);
     bindAoPassInputs(ctx);
     GlTexture out = createAoTexture(ctx.evalWidth, ctx.evalHeight);
-    dispatchAoPass(aoProgram("ao/horizon.glsl"), out, ctx.evalWidth, ctx.evalHeight);
+    dispatchAoPass(cachedProgram(computeProgramKey("ao/horizon.glsl")), out, ctx.evalWidth, ctx.evalHeight);
     return out;
 }
 

@@ -70,7 +70,7 @@ GlTexture runSsao(const AoPassContext& ctx, int kind, const SsaoSettings& settin
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::AO_BINDING_KERNEL, kernelBuffer.id());
     bindAoPassInputs(ctx);
     GlTexture out = createAoTexture(ctx.evalWidth, ctx.evalHeight);
-    dispatchAoPass(aoProgram("ao/ssao.glsl"), out, ctx.evalWidth, ctx.evalHeight);
+    dispatchAoPass(cachedProgram(computeProgramKey("ao/ssao.glsl")), out, ctx.evalWidth, ctx.evalHeight);
     return out;
 }
 

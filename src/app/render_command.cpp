@@ -2,6 +2,7 @@
 
 #include "eval/image_io.h"
 #include "gl/context.h"
+#include "gl/program_limits.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "util/atomic_file.h"
@@ -57,7 +58,9 @@ RenderRequest makeRenderRequest(const RenderOptions& o, const Scene& scene) {
     if (!std::isfinite(o.radius) || o.radius <= 0.f) throw std::invalid_argument("--radius must be finite and > 0");
     if (!std::isfinite(o.sky) || o.sky < 0.f) throw std::invalid_argument("--sky must be finite and >= 0");
     if (o.spp < 1 || o.spp > (1 << 20)) throw std::invalid_argument("--spp must be in [1, 1048576]");
-    if (o.voxelRes < 4 || o.voxelRes > 1024) throw std::invalid_argument("--voxel-res must be in [4, 1024]");
+    if (o.voxelRes < kMinVoxelRes || o.voxelRes > kMaxVoxelRes)
+        throw std::invalid_argument("--voxel-res must be in [" + std::to_string(kMinVoxelRes) + ", " +
+                                    std::to_string(kMaxVoxelRes) + "]");
     r.radius = o.radius;
     r.sky = o.sky;
     r.spp = o.spp;
@@ -201,6 +204,7 @@ int runInfo(const std::string& scenePath, const std::string& glDevice) {
     GlContext& gl = GlContext::shared(parseGlDevice(glDevice));
     std::cout << "gl_renderer: " << gl.info().renderer << "\ngl_version: " << gl.info().version
               << "\ngl_platform: " << gl.info().platform << "\n";
+    for (const std::string& line : describeDeviceLimits()) std::cout << line << "\n";
     return 0;
 }
 

@@ -51,7 +51,9 @@ CLI::App* gVoxelizeCmd = nullptr;
 int runVoxelize(const VoxelizeOptions& o) {
     if (o.output.size() < 4 || o.output.substr(o.output.size() - 4) != ".vdb")
         throw std::invalid_argument("-o " + o.output + ": output must end in .vdb");
-    if (o.voxelRes < 4 || o.voxelRes > 1024) throw std::invalid_argument("--voxel-res must be in [4, 1024]");
+    if (o.voxelRes < kMinVoxelRes || o.voxelRes > kMaxVoxelRes)
+        throw std::invalid_argument("--voxel-res must be in [" + std::to_string(kMinVoxelRes) + ", " +
+                                    std::to_string(kMaxVoxelRes) + "]");
     Scene scene = loadScene(o.scenePath);
     ParamMap params;
     for (const auto& p : o.params) params.set(p);

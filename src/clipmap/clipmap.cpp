@@ -1,8 +1,9 @@
 #include "clipmap/clipmap.h"
 
 #include "cone/clipmap_shared.h"
-#include "gl/program.h"
+#include "gl/program_cache.h"
 #include "voxelize/voxel_gl.h"
+#include "voxelize/voxel_programs.h"
 #include "voxelize/voxelize.h"
 #include "voxelize/voxelize_shared.h"
 
@@ -62,13 +63,13 @@ namespace {
 void nestLevel(const VoxelGrid& fine, VoxelGrid& coarse, const glm::ivec3& offset) {
     auto copy = [&](const GlTexture& src, const GlTexture& dst) {
         const GLenum format = textureInternalFormat(dst.id());
-        GlProgram p = buildComputeProgram("voxelize/clipmap_nest.glsl", {{"DST_FORMAT", glslImageFormat(format)}});
+        const GLuint p = cachedProgram(clipmapNestProgramKey(format));
         const glm::ivec3 size = glm::max(fine.resolution / 2, glm::ivec3(1));
-        setUniform(p.id(), "uFineSize", size);
-        setUniform(p.id(), "uOffset", offset);
+        setUniform(p, "uFineSize", size);
+        setUniform(p, "uOffset", offset);
         glBindTextureUnit(0, src.id());
         bindImage3D(0, dst.id(), 0, GL_WRITE_ONLY, format);
-        glUseProgram(p.id());
+        glUseProgram(p);
         const int g = gpu::VOX_GRID_GROUP;
         glDispatchCompute(groupCount(size.x, g), groupCount(size.y, g), groupCount(size.z, g));
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);

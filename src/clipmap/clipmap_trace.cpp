@@ -4,6 +4,7 @@
 
 #include "cone/clipmap_shared.h"
 #include "cone/cone_gpu.h"
+#include "cone/cone_programs.h"
 #include "cone/cone_set.h"
 
 #include <cmath>
@@ -45,8 +46,7 @@ GlTexture traceClipmap(bool gi, const Clipmap& cm, const GBuffer& gbuffer, float
     c.info = glm::vec4(float(layout.levelCount), float(layout.resolution), float(base.levels), 0.f);
     c.band = glm::vec4(gpu::CLIPMAP_BORDER_MARGIN, gpu::CLIPMAP_BLEND_WIDTH, 0.f, 0.f);
 
-    const GLuint program = coneProgram(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl",
-                                       {{"CONE_GI", gi ? "1" : "0"}, {"CONE_CLIPMAP", "1"}});
+    const GLuint program = cachedProgram(clipmapConePassProgramKey(gi));
     GlBuffer ubo = bindConeUniforms(u);
     GlBuffer clipUbo = createBuffer(sizeof(c), &c, 0);
     glBindBufferBase(GL_UNIFORM_BUFFER, gpu::CLIPMAP_UBO_BINDING, clipUbo.id());

@@ -1,10 +1,13 @@
 #include "cone/cone_bounce.h"
 
 #include "cone/cone_gpu.h"
+#include "cone/cone_programs.h"
 #include "voxelize/voxel_gl.h"
 #include "voxelize/voxelize.h"
 
+#include <algorithm>
 #include <stdexcept>
+#include <vector>
 
 namespace vct {
 
@@ -25,6 +28,22 @@ void refuseVctBounces(const ParamMap& params, bool injects, const std::string& w
     if (injects && params.has("vct.bounces") && bounces > 0)
         throw std::invalid_argument(where + ": vct.bounces = " + std::to_string(bounces) +
                                     " is not supported (direct light only; use vct.bounces=0)");
+}
+
+std::vector<VoxelListSlab> voxelListSlabs(const glm::ivec3& res, size_t occupiedVoxels) {
+    // GL guarantees 128 MiB per storage buffer binding; a whole-grid list would hold 512 MB at
+    // 512^3, and voxelization has counted the occupied voxels, which bound any list.
+    const size_t sliceVoxels = size_t(std::max(res.x, 1)) * size_t(std::max(res.y, 1));
+    const int slices = int(std::max<size_t>(1, (kMaxVoxelListEntries - 1) / sliceVoxels));
+    std::vector<VoxelListSlab> slabs;
+    for (int z0 = 0; z0 < res.z; z0 += slices) {
+        VoxelListSlab s;
+        s.z0 = z0;
+        s.z1 = std::min(res.z, z0 + slices);
+        s.capacity = std::min(occupiedVoxels, sliceVoxels * size_t(s.z1 - z0));
+        slabs.push_back(s);
+    }
+    return slabs;
 }
 
 void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, const ParamMap& params,
@@ -50,37 +69,50 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
     glCopyImageSubData(grid.radiance.id(), GL_TEXTURE_3D, 0, 0, 0, 0, direct.id(), GL_TEXTURE_3D, 0, 0, 0, 0, res.x,
                        res.y, res.z);
     GlBuffer ubo = bindConeUniforms(coneUniforms(true, grid, 2.f * diagonal, bounceSky ? sky : 0.f, cone));
-    const uint32_t zero = 0;
-    // Gathering voxels are occupied ones: the list needs no more room than voxelization counted
-    // (a whole-grid list would be 512 MB at 512^3).
-    GlBuffer list = createBuffer(sizeof(uint32_t) * (1 + grid.occupiedVoxels), nullptr, GL_DYNAMIC_STORAGE_BIT);
-    glNamedBufferSubData(list.id(), 0, sizeof(zero), &zero);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_VOXEL_LIST, list.id());
-    uint32_t listed = 0;
+    // The gathering voxels, one list per slab of z slices (voxelListSlabs).
+    struct Slab {
+        VoxelListSlab range;
+        GlBuffer list;
+        uint32_t listed = 0;
+    };
+    std::vector<Slab> slabs;
+    for (const VoxelListSlab& range : voxelListSlabs(res, grid.occupiedVoxels)) {
+        Slab slab;
+        slab.range = range;
+        slab.list = createBuffer(sizeof(uint32_t) * (1 + range.capacity), nullptr, GL_DYNAMIC_STORAGE_BIT);
+        const uint32_t zero = 0;
+        glNamedBufferSubData(slab.list.id(), 0, sizeof(zero), &zero);
+        slabs.push_back(std::move(slab));
+    }
     for (int i = 0; i < bounces; ++i) {
         // The mips (and the directional textures, rebuilt anew) of the previous total.
         buildMips(grid, cone.anisotropic, mipsTimer, "bounce_mips");
-        ShaderDefines defines = bindGridTextures(true, grid, cone);
-        defines.push_back({"RADIANCE_FORMAT", glslImageFormat(format)});
-        defines.push_back({"RADIANCE_FORMAT_MAX", formatMaxLiteral(format)});
+        const bool aniso = bindGridTextures(true, grid, cone);
         glBindTextureUnit(gpu::CONE_UNIT_BOUNCE_DIRECT, direct.id());
         glBindTextureUnit(gpu::CONE_UNIT_BOUNCE_ALBEDO, grid.albedo.id());
         if (i == 0) {
-            // The gathering voxels, listed once: direct light and normals do not change.
-            ShaderDefines listDefines = defines;
-            listDefines.push_back({"BOUNCE_LIST", "1"});
-            glUseProgram(coneProgram("cone/cone_bounce.glsl", listDefines));
+            // Listed once: direct light and normals do not change.
+            const GLuint listPass = cachedProgram(coneBounceProgramKey(aniso, format, true));
+            glUseProgram(listPass);
             const int g = gpu::VOX_GRID_GROUP;
-            glDispatchCompute(groupCount(res.x, g), groupCount(res.y, g), groupCount(res.z, g));
-            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-            glGetNamedBufferSubData(list.id(), 0, sizeof(listed), &listed);
+            for (Slab& slab : slabs) {
+                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_VOXEL_LIST, slab.list.id());
+                glProgramUniform2i(listPass, glGetUniformLocation(listPass, "uSlab"), slab.range.z0, slab.range.z1);
+                glDispatchCompute(groupCount(res.x, g), groupCount(res.y, g), groupCount(slab.range.z1 - slab.range.z0, g));
+                glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+                glGetNamedBufferSubData(slab.list.id(), 0, sizeof(slab.listed), &slab.listed);
+            }
         }
         // Voxels that do not gather keep their direct light.
         glCopyImageSubData(direct.id(), GL_TEXTURE_3D, 0, 0, 0, 0, next.id(), GL_TEXTURE_3D, 0, 0, 0, 0, res.x, res.y,
                            res.z);
         bindImage3D(gpu::CONE_IMAGE_OUTPUT, next.id(), 0, GL_WRITE_ONLY, format);
-        glUseProgram(coneProgram("cone/cone_bounce.glsl", defines));
-        glDispatchCompute(groupCount(int(listed), gpu::CONE_BOUNCE_GROUP), 1, 1);
+        glUseProgram(cachedProgram(coneBounceProgramKey(aniso, format, false)));
+        for (const Slab& slab : slabs) {
+            if (slab.listed == 0) continue;
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_VOXEL_LIST, slab.list.id());
+            glDispatchCompute(groupCount(int(slab.listed), gpu::CONE_BOUNCE_GROUP), 1, 1);
+        }
         glMemoryBarrier(GL_ALL_BARRIER_BITS);
         glCopyImageSubData(next.id(), GL_TEXTURE_3D, 0, 0, 0, 0, grid.radiance.id(), GL_TEXTURE_3D, 0, 0, 0, 0, res.x,
                            res.y, res.z);

@@ -15,7 +15,12 @@
 #include "render/timing.h"
 #include "voxelize/voxel_grid.h"
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
 
 namespace vct {
 
@@ -24,6 +29,19 @@ namespace vct {
 // against 4 path-traced reflections; with one bounce it is within 10% of the bounce-matched
 // reference. It costs one more cone gather per occupied voxel (timer scope "bounce").
 constexpr int kDefaultVctBounces = 1;
+
+// Entries of one list of gathering voxels (count + codes, 4 bytes each): the 128 MiB a
+// shader storage buffer binding is guaranteed to hold. Larger grids list slab by slab.
+constexpr size_t kMaxVoxelListEntries = (size_t(1) << 27) / sizeof(uint32_t);
+
+// A slab of z slices [z0, z1) with its own list of gathering voxels, of room for `capacity`
+// codes (at most the slab's voxels or the grid's occupied voxels, whichever is fewer).
+struct VoxelListSlab {
+    int z0 = 0, z1 = 0;
+    size_t capacity = 0;
+};
+// The slabs of a grid of `resolution` (each list within kMaxVoxelListEntries, count included).
+std::vector<VoxelListSlab> voxelListSlabs(const glm::ivec3& resolution, size_t occupiedVoxels);
 
 // Reads vct.bounces (range 0..8, default kDefaultVctBounces) with its --help-params line.
 int readVctBounces(const ParamMap& params);

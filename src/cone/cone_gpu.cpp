@@ -8,16 +8,6 @@
 
 namespace vct::conedetail {
 
-GLuint coneProgram(const std::string& name, const ShaderDefines& defines) {
-    // Function-local static: created after the shared GL context, so destroyed before it.
-    static std::map<std::string, GlProgram> cache;
-    std::string key = name;
-    for (const auto& [k, v] : defines) key += "|" + k + "=" + v;
-    auto it = cache.find(key);
-    if (it == cache.end()) it = cache.emplace(key, buildComputeProgram(name, defines)).first;
-    return it->second.id();
-}
-
 void setGridUniforms(gpu::ConeUniforms& u, const VoxelGrid& grid) {
     u.voxelFromWorld = grid.voxelFromWorld;
     u.gridResolution = glm::vec4(glm::vec3(grid.resolution), float(grid.levels));
@@ -57,13 +47,13 @@ gpu::ConeUniforms coneUniforms(bool gi, const VoxelGrid& grid, float maxDistWorl
     return u;
 }
 
-ShaderDefines bindGridTextures(bool gi, const VoxelGrid& grid, const ConeSettings& settings) {
+bool bindGridTextures(bool gi, const VoxelGrid& grid, const ConeSettings& settings) {
     const bool aniso = useAniso(grid, settings);
     glBindTextureUnit(gpu::CONE_UNIT_OPACITY, gi ? grid.radiance.id() : grid.opacity.id());
     if (gi) glBindTextureUnit(gpu::CONE_UNIT_NORMAL, grid.normal.id());
     if (aniso)
         for (int i = 0; i < 6; ++i) glBindTextureUnit(gpu::CONE_UNIT_ANISO + i, grid.anisoRadiance[i].id());
-    return {{"CONE_GI", gi ? "1" : "0"}, {"CONE_ANISO", aniso ? "1" : "0"}};
+    return aniso;
 }
 
 BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffer, float maxDistWorld, float sky,
@@ -73,7 +63,7 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
     BoundConePass bound;
     bound.ubo = bindConeUniforms(u);
     bindGBufferTextures(gbuffer);  // the shaders texelFetch position, normal, geomNormal, albedo
-    bound.defines = bindGridTextures(gi, grid, settings);
+    bound.aniso = bindGridTextures(gi, grid, settings);
     return bound;
 }
 

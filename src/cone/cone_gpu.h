@@ -5,16 +5,13 @@
 #include "cone/cone_settings.h"
 #include "cone/cone_shared.h"
 #include "gl/handles.h"
-#include "gl/program.h"
+#include "gl/program_cache.h"
 #include "render/gbuffer.h"
 #include "voxelize/voxel_grid.h"
 
 #include <string>
 
 namespace vct::conedetail {
-
-// Builds `name` with `defines` once per process; programs live as long as the GL context.
-GLuint coneProgram(const std::string& name, const ShaderDefines& defines);
 
 // Grid fields of the uniform block (voxelFromWorld, gridResolution).
 void setGridUniforms(gpu::ConeUniforms& u, const VoxelGrid& grid);
@@ -29,15 +26,16 @@ gpu::ConeUniforms coneUniforms(bool gi, const VoxelGrid& grid, float maxDistWorl
                                const ConeSettings& settings);
 
 // Binds the grid's textures a cone pass samples (opacity or radiance, normals for GI's
-// facing test, the directional mips when used) and returns the CONE_GI / CONE_ANISO defines.
-ShaderDefines bindGridTextures(bool gi, const VoxelGrid& grid, const ConeSettings& settings);
+// facing test, the directional mips when used); returns whether the directional mips are
+// used (the CONE_ANISO variant of the pass's program).
+bool bindGridTextures(bool gi, const VoxelGrid& grid, const ConeSettings& settings);
 
 // One cone pass bound and ready for its program's dispatch: uniforms uploaded and bound,
 // the G-buffer, the grid's textures (opacity or radiance, directional mips, normals for
-// GI's facing test) on their units. `defines` are the CONE_GI / CONE_ANISO the shader needs.
+// GI's facing test) on their units. `aniso`: the directional mips are bound.
 struct BoundConePass {
     GlBuffer ubo;
-    ShaderDefines defines;
+    bool aniso = false;
 };
 BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffer, float maxDistWorld, float sky,
                            const ConeSettings& settings);

@@ -1,6 +1,7 @@
 #include "cone/cone_trace.h"
 
 #include "cone/cone_gpu.h"
+#include "cone/cone_programs.h"
 #include "cone/cone_set.h"
 
 #include <cmath>
@@ -31,8 +32,7 @@ GlTexture tracePass(ConeMode mode, const VoxelGrid& grid, const GBuffer& gbuffer
                     const ConeSettings& settings) {
     const bool gi = mode == ConeMode::GI;
     BoundConePass bound = bindConePass(gi, grid, gbuffer, maxDistWorld, sky, settings);
-    return dispatchPixelPass(coneProgram(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl", bound.defines), gi,
-                             gbuffer);
+    return dispatchPixelPass(cachedProgram(conePassProgramKey(gi, bound.aniso)), gi, gbuffer);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // rayMarchVoxels (declared in cone/cone_trace.h): the inspection view of the grid.
 #include "cone/cone_gpu.h"
+#include "cone/cone_programs.h"
 #include "cone/cone_trace.h"
 
 #include <cmath>
@@ -36,11 +37,7 @@ GlTexture rayMarchVoxels(const VoxelGrid& grid, const View& view, const std::str
     u.image = glm::ivec4(view.width, view.height, 0, 0);
 
     auto scope = timer.scope("cone_view");
-    // The channel is a preprocessor switch: GLSL `const int`s are not visible to #if.
-    ShaderDefines defines;
-    if (channel == gpu::CONE_CHANNEL_RADIANCE) defines = {{"CONE_VIEW_RADIANCE", "1"}};
-    if (channel == gpu::CONE_CHANNEL_ALBEDO) defines = {{"CONE_VIEW_ALBEDO", "1"}};
-    GLuint program = coneProgram("cone/cone_raymarch.glsl", defines);
+    const GLuint program = cachedProgram(voxelViewProgramKey(channel));
     GlTexture out = createTexture2D(GL_RGBA32F, view.width, view.height);
     GlBuffer ubo = bindConeUniforms(u);
     glBindTextureUnit(gpu::CONE_UNIT_OPACITY,

@@ -4,6 +4,7 @@
 #include <epoxy/gl.h>
 
 #include <atomic>
+#include <cstdlib>
 #include <cstring>
 #include <mutex>
 #include <stdexcept>
@@ -132,6 +133,10 @@ GlContext& GlContext::shared(GlDevice device) {
     static std::unique_ptr<GlContext> instance;
     static std::mutex m;
     std::lock_guard<std::mutex> lock(m);
+    // VCT_GL_DEVICE=device|surfaceless chooses for every Auto request: the test suite runs
+    // on a GPU's EGL device platform without a flag per test.
+    const char* env = std::getenv("VCT_GL_DEVICE");
+    if (device == GlDevice::Auto && env && *env) device = parseGlDevice(env);
     if (!instance) instance = std::make_unique<GlContext>(device);
     return *instance;
 }

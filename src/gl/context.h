@@ -36,7 +36,8 @@ public:
     // Errors reported since the last check, without clearing them.
     std::vector<std::string> pendingErrors() const;
 
-    // The process-wide context, created on first use (tests and the CLI share one).
+    // The process-wide context, created on first use (tests and the CLI share one). An Auto
+    // request takes $VCT_GL_DEVICE (auto, surfaceless or device) where it is set.
     static GlContext& shared(GlDevice device = GlDevice::Auto);
 
 private:

@@ -1,5 +1,11 @@
 #include "gl/handles.h"
 
+#include "gl/program_limits.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
 namespace vct {
 
 GlTexture createTexture2D(GLenum internalFormat, int width, int height, int levels) {
@@ -14,6 +20,11 @@ GlTexture createTexture2D(GLenum internalFormat, int width, int height, int leve
 }
 
 GlTexture createTexture3D(GLenum internalFormat, int w, int h, int d, int levels) {
+    // A clear refusal instead of GL_INVALID_VALUE: GL guarantees 2048 texels per axis.
+    static const int maxSize = deviceLimits().max3DTextureSize;
+    if (std::max(w, std::max(h, d)) > maxSize)
+        throw std::runtime_error("3D texture " + std::to_string(w) + "x" + std::to_string(h) + "x" + std::to_string(d) +
+                                 " exceeds this GL's GL_MAX_3D_TEXTURE_SIZE of " + std::to_string(maxSize));
     GLuint id = 0;
     glCreateTextures(GL_TEXTURE_3D, 1, &id);
     glTextureStorage3D(id, levels, internalFormat, w, h, d);

@@ -1,10 +1,9 @@
 #include "raster/gbuffer_pass.h"
 
-#include "gl/program.h"
+#include "raster/raster_programs.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include <map>
 #include <stdexcept>
 
 namespace vct {
@@ -21,17 +20,7 @@ void bindGBufferTextures(const GBuffer& g) {
 GBuffer renderGBuffer(const GpuScene& scene, const View& view, PassTimer& timer) {
     auto scope = timer.scope("gbuffer");
     // One program per shader variant: features the scene does not use are compiled out.
-    static std::map<std::string, GlProgram> programs;
-    ShaderDefines defines;
-    if (!scene.hasTextures) defines.push_back({"SCENE_NO_TEXTURES", "1"});
-    if (!scene.hasAlphaMask) defines.push_back({"SCENE_NO_ALPHA_MASK", "1"});
-    std::string key;
-    for (const auto& d : defines) key += d.first + ";";
-    auto it = programs.find(key);
-    if (it == programs.end())
-        it = programs.emplace(key, buildGraphicsProgram("raster/gbuffer_vert.glsl", "raster/gbuffer_frag.glsl", defines))
-                 .first;
-    const GlProgram& program = it->second;
+    const GLuint program = cachedProgram(gbufferProgramKey(scene.hasTextures, scene.hasAlphaMask));
 
     GBuffer g;
     g.width = view.width;
@@ -66,12 +55,12 @@ GBuffer renderGBuffer(const GpuScene& scene, const View& view, PassTimer& timer)
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);
     glDisable(GL_CULL_FACE);
-    glUseProgram(program.id());
-    glUniformMatrix4fv(glGetUniformLocation(program.id(), "clipFromWorld"), 1, GL_FALSE,
+    glUseProgram(program);
+    glUniformMatrix4fv(glGetUniformLocation(program, "clipFromWorld"), 1, GL_FALSE,
                        glm::value_ptr(view.clipFromWorld));
-    glUniformMatrix4fv(glGetUniformLocation(program.id(), "viewFromWorld"), 1, GL_FALSE,
+    glUniformMatrix4fv(glGetUniformLocation(program, "viewFromWorld"), 1, GL_FALSE,
                        glm::value_ptr(view.viewFromWorld));
-    glUniform3fv(glGetUniformLocation(program.id(), "eyeWorld"), 1, glm::value_ptr(view.camera.eye));
+    glUniform3fv(glGetUniformLocation(program, "eyeWorld"), 1, glm::value_ptr(view.camera.eye));
     bindSceneBuffers(scene);
     glBindVertexArray(scene.vao.id());
     glDrawElements(GL_TRIANGLES, 3 * scene.triangleCount, GL_UNSIGNED_INT, nullptr);

@@ -1,6 +1,6 @@
 #include "raster/lighting_pass.h"
 
-#include "gl/program.h"
+#include "raster/raster_programs.h"
 #include "raster/raster_shared.h"
 
 namespace vct {
@@ -8,10 +8,10 @@ namespace vct {
 GlTexture computeDirectLighting(const GBuffer& g, const GpuScene& scene, const ShadowMaps& shadows,
                                 PassTimer& timer) {
     auto scope = timer.scope("direct");
-    static GlProgram program = buildComputeProgram("raster/direct_comp.glsl");
+    const GLuint program = cachedProgram(directLightProgramKey());
     GlTexture out = createTexture2D(GL_RGBA32F, g.width, g.height);
-    glUseProgram(program.id());
-    glUniform1i(glGetUniformLocation(program.id(), "lightCount"), scene.lightCount);
+    glUseProgram(program);
+    glUniform1i(glGetUniformLocation(program, "lightCount"), scene.lightCount);
     bindGBufferTextures(g);
     bindSceneBuffers(scene);
     bindShadowMaps(shadows);
@@ -23,12 +23,12 @@ GlTexture computeDirectLighting(const GBuffer& g, const GpuScene& scene, const S
 
 CompositeOutputs composite(const GBuffer& g, const CompositeInputs& in, PassTimer& timer) {
     auto scope = timer.scope("composite");
-    static GlProgram program = buildComputeProgram("raster/composite_comp.glsl");
+    const GLuint program = cachedProgram(compositeProgramKey());
     static GlTexture dummy = createTexture2D(GL_RGBA32F, 1, 1);
     CompositeOutputs out;
     out.beauty = createTexture2D(GL_RGBA32F, g.width, g.height);
     out.indirect = createTexture2D(GL_RGBA32F, g.width, g.height);
-    GLuint p = program.id();
+    GLuint p = program;
     glUseProgram(p);
     glUniform1i(glGetUniformLocation(p, "useGi"), in.indirect ? 1 : 0);
     glUniform1i(glGetUniformLocation(p, "useDirect"), in.direct ? 1 : 0);

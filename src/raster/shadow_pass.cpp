@@ -1,7 +1,7 @@
 #include "raster/shadow_pass.h"
 
 #include "common/scene_shared.h"
-#include "gl/program.h"
+#include "raster/raster_programs.h"
 #include "raster/raster_shared.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -54,7 +54,7 @@ void bindShadowMaps(const ShadowMaps& s) {
 ShadowMaps renderShadowMaps(const GpuScene& gpuScene, const Scene& scene, int size, PassTimer& timer) {
     if (scene.lights.empty()) return emptyShadowMaps();
     auto scope = timer.scope("shadow");
-    static GlProgram program = buildGraphicsProgram("raster/shadow_vert.glsl", "raster/shadow_frag.glsl");
+    const GLuint program = cachedProgram(shadowProgramKey());
 
     ShadowMaps s;
     s.size = size;
@@ -75,10 +75,10 @@ ShadowMaps renderShadowMaps(const GpuScene& gpuScene, const Scene& scene, int si
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
-    glUseProgram(program.id());
-    GLint locClip = glGetUniformLocation(program.id(), "clipFromWorld");
-    GLint locLightPos = glGetUniformLocation(program.id(), "lightPos");
-    GLint locStore = glGetUniformLocation(program.id(), "storeDistance");
+    glUseProgram(program);
+    GLint locClip = glGetUniformLocation(program, "clipFromWorld");
+    GLint locLightPos = glGetUniformLocation(program, "lightPos");
+    GLint locStore = glGetUniformLocation(program, "storeDistance");
     glBindVertexArray(gpuScene.vao.id());
 
     auto draw = [&](const glm::mat4& clipFromWorld) {

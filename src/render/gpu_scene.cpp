@@ -1,6 +1,7 @@
 #include "render/gpu_scene.h"
 
 #include "common/scene_shared.h"
+#include "gl/program_limits.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -78,6 +79,18 @@ GpuScene uploadScene(const Scene& scene) {
     g.bounds = scene.bounds;
     g.hasTextures = !scene.textures.empty();
     for (const Material& m : scene.materials) g.hasAlphaMask |= m.alphaMask;
+
+    // Shaders read the scene's arrays as shader storage blocks, each within the device's
+    // block size (GL guarantees 128 MiB: 2.8 million vertices, 11 million triangles).
+    const std::string where = "scene" + (scene.path.empty() ? std::string() : " '" + scene.path + "'");
+    checkStorageBufferSize(scene.positions.size() * sizeof(gpu::GpuVertex),
+                           where + ": " + std::to_string(scene.positions.size()) + " vertices");
+    checkStorageBufferSize(scene.triangles.size() * sizeof(glm::uvec3),
+                           where + ": " + std::to_string(scene.triangles.size()) + " triangles");
+    if (scene.textures.size() > size_t(deviceLimits().arrayTextureLayers))
+        throw std::runtime_error(where + ": " + std::to_string(scene.textures.size()) +
+                                 " textures, more than the " + std::to_string(deviceLimits().arrayTextureLayers) +
+                                 " layers of this GL's texture arrays (GL_MAX_ARRAY_TEXTURE_LAYERS)");
 
     std::vector<gpu::GpuVertex> vertices(scene.positions.size());
     for (size_t i = 0; i < vertices.size(); ++i) {

@@ -11,6 +11,11 @@
 
 namespace vct {
 
+// The voxel resolutions a render accepts (--voxel-res): every grid, directional mip and
+// clipmap level then stays within the 2048 texels per axis of a 3D texture that GL guarantees.
+constexpr int kMinVoxelRes = 4;
+constexpr int kMaxVoxelRes = 1024;
+
 struct RenderRequest {
     Camera camera;
     int width = 256;                         // pixels, [1, 16384]
@@ -20,7 +25,7 @@ struct RenderRequest {
     float radius = 1.f;                      // AO radius R, world units, shared by every AO method
     int spp = 64;                            // reference samples per pixel
     uint64_t seed = 0;                       // every random choice derives from it
-    int voxelRes = 128;                      // voxels along the grid's longest axis, [16, 512]
+    int voxelRes = 128;                      // voxels along the grid's longest axis, [kMinVoxelRes, kMaxVoxelRes]
     std::string backend = "gl";              // gl (dense 3D texture) | vdb (sparse, CPU)
     std::vector<std::string> aovs{"beauty"}; // requested outputs
     float sky = 1.f;                         // uniform sky radiance

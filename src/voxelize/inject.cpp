@@ -1,7 +1,8 @@
 #include "voxelize/voxelize.h"
 
-#include "gl/program.h"
+#include "gl/program_cache.h"
 #include "voxelize/voxel_gl.h"
+#include "voxelize/voxel_programs.h"
 #include "voxelize/voxelize_shared.h"
 
 #include <algorithm>
@@ -54,8 +55,6 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
                          "auto = float when emission or lights exceed the half range");
     const bool useFloat = precision == "float" || (precision == "auto" && radianceNeedsFloat(grid, scene));
     const GLenum format = useFloat ? GL_RGBA32F : GL_RGBA16F;
-    const ShaderDefines defines = {{"RADIANCE_FORMAT", glslImageFormat(format)},
-                                   {"RADIANCE_FORMAT_MAX", formatMaxLiteral(format)}};
     constexpr int maxOuter = 7, outerUnit = 20;  // clear of the scene textures (unit 8)
     if (int(outerLevels.size()) > maxOuter)
         throw std::invalid_argument("injectRadiance: more than 7 outer clipmap levels");
@@ -63,9 +62,7 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
         if (!o || !o->opacity || o->resolution != glm::ivec3(o->resolution.x) ||
             o->resolution.x != outerLevels.front()->resolution.x)
             throw std::invalid_argument("injectRadiance: outer levels must be voxelized cubic grids of one size");
-    ShaderDefines injectDefines = defines;
-    if (!outerLevels.empty()) injectDefines.push_back({"OUTER_LEVELS", std::to_string(outerLevels.size())});
-    GlProgram inject = buildComputeProgram("voxelize/inject.glsl", injectDefines);
+    const GLuint p = cachedProgram(injectProgramKey(format, int(outerLevels.size())));
     const glm::ivec3 res = grid.resolution;
     grid.radiance = createTexture3D(format, res.x, res.y, res.z, grid.levels);
 
@@ -78,7 +75,6 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
     glBindTextureUnit(2, grid.normal.id());
     glBindTextureUnit(3, grid.emission.id());
     bindImage3D(0, grid.radiance.id(), 0, GL_WRITE_ONLY, format);
-    const GLuint p = inject.id();
     setUniform(p, "uResolution", res);
     setUniform(p, "uGridOrigin", grid.origin);
     setUniform(p, "uVoxelSize", grid.voxelSize);

@@ -1,7 +1,8 @@
 #include "voxelize/voxelize.h"
 
-#include "gl/program.h"
+#include "gl/program_cache.h"
 #include "voxelize/voxel_gl.h"
+#include "voxelize/voxel_programs.h"
 #include "voxelize/voxelize_shared.h"
 
 #include <algorithm>
@@ -25,24 +26,20 @@ bool filtersNormals(const VoxelGrid& grid) {
     return grid.radiance && grid.normal && textureLevelCount(grid.normal) >= grid.levels;
 }
 
-GlProgram buildIsotropicMipProgram(const VoxelGrid& grid) {
-    ShaderDefines defines;
-    if (grid.radiance)
-        defines = {{"HAS_RADIANCE", "1"},
-                   {"RADIANCE_FORMAT", glslImageFormat(textureInternalFormat(grid.radiance.id()))}};
-    if (filtersNormals(grid)) defines.push_back({"HAS_NORMAL", "1"});
-    return buildComputeProgram("voxelize/mip_iso.glsl", defines);
+GLuint isotropicMipProgram(const VoxelGrid& grid) {
+    return cachedProgram(
+        isotropicMipProgramKey(grid.radiance ? textureInternalFormat(grid.radiance.id()) : 0, filtersNormals(grid)));
 }
 
-void buildIsotropicMips(VoxelGrid& grid, const GlProgram& program) {
+void buildIsotropicMips(VoxelGrid& grid, GLuint program) {
     const bool hasRadiance = bool(grid.radiance);
     const GLenum radianceFormat = hasRadiance ? textureInternalFormat(grid.radiance.id()) : GL_RGBA16F;
     const bool hasNormal = filtersNormals(grid);
-    glUseProgram(program.id());
+    glUseProgram(program);
     for (int level = 1; level < grid.levels; ++level) {
         glm::ivec3 src = levelSize(grid.resolution, level - 1), dst = levelSize(grid.resolution, level);
-        setUniform(program.id(), "uSrcSize", src);
-        setUniform(program.id(), "uDstSize", dst);
+        setUniform(program, "uSrcSize", src);
+        setUniform(program, "uDstSize", dst);
         bindImage3D(0, grid.opacity.id(), level - 1, GL_READ_ONLY, GL_R16F);
         bindImage3D(1, grid.opacity.id(), level, GL_WRITE_ONLY, GL_R16F);
         if (hasRadiance) {
@@ -59,8 +56,8 @@ void buildIsotropicMips(VoxelGrid& grid, const GlProgram& program) {
 }
 
 struct AnisoPrograms {
-    GlProgram first;  // pyramid level 1 from the base texture
-    GlProgram rest;   // from the directional texture's previous level
+    GLuint first = 0;  // pyramid level 1 from the base texture
+    GLuint rest = 0;   // from the directional texture's previous level
 };
 
 GLenum anisoBaseFormat(const VoxelGrid& grid) {
@@ -72,13 +69,8 @@ GLenum anisoFormatFor(GLenum baseFormat) { return baseFormat == GL_RGBA32F ? GL_
 
 AnisoPrograms buildAnisoPrograms(const VoxelGrid& grid) {
     const GLenum baseFormat = anisoBaseFormat(grid), anisoFormat = anisoFormatFor(baseFormat);
-    ShaderDefines firstDefines = {{"SRC_FORMAT", glslImageFormat(baseFormat)},
-                                  {"DST_FORMAT", glslImageFormat(anisoFormat)}};
-    if (!grid.radiance) firstDefines.push_back({"SOURCE_OPACITY", "1"});
-    ShaderDefines restDefines = {{"SRC_FORMAT", glslImageFormat(anisoFormat)},
-                                 {"DST_FORMAT", glslImageFormat(anisoFormat)}};
-    return {buildComputeProgram("voxelize/mip_aniso.glsl", firstDefines),
-            buildComputeProgram("voxelize/mip_aniso.glsl", restDefines)};
+    return {cachedProgram(anisotropicMipProgramKey(baseFormat, anisoFormat)),
+            cachedProgram(anisotropicMipProgramKey(anisoFormat, anisoFormat))};
 }
 
 void buildAnisotropicMips(VoxelGrid& grid, const AnisoPrograms& programs) {
@@ -92,7 +84,7 @@ void buildAnisotropicMips(VoxelGrid& grid, const AnisoPrograms& programs) {
         grid.anisoRadiance[size_t(d)] = createTexture3D(anisoFormat, base.x, base.y, base.z, anisoLevels);
     const GLuint baseTexture = hasRadiance ? grid.radiance.id() : grid.opacity.id();
     for (int level = 0; level < anisoLevels; ++level) {
-        const GLuint p = level == 0 ? programs.first.id() : programs.rest.id();
+        const GLuint p = level == 0 ? programs.first : programs.rest;
         glUseProgram(p);
         // Pyramid level level + 1 from pyramid level `level`.
         glm::ivec3 src = levelSize(grid.resolution, level), dst = levelSize(grid.resolution, level + 1);
@@ -116,7 +108,7 @@ void buildAnisotropicMips(VoxelGrid& grid, const AnisoPrograms& programs) {
 
 void buildMips(VoxelGrid& grid, bool anisotropic, PassTimer& timer, const std::string& scopeName) {
     if (!grid.opacity) throw std::invalid_argument("buildMips: the grid has no opacity (voxelize first)");
-    GlProgram iso = buildIsotropicMipProgram(grid);
+    const GLuint iso = isotropicMipProgram(grid);
     AnisoPrograms aniso;
     if (anisotropic) aniso = buildAnisoPrograms(grid);
     auto scope = timer.scope(scopeName);

@@ -1,8 +1,10 @@
 #include "voxelize/voxelize.h"
 
 #include "common/scene_shared.h"
-#include "gl/program.h"
+#include "gl/program_cache.h"
+#include "gl/program_limits.h"
 #include "voxelize/voxel_gl.h"
+#include "voxelize/voxel_programs.h"
 #include "voxelize/voxelize_shared.h"
 
 #include <algorithm>
@@ -35,6 +37,38 @@ float maxMaterialEmission(const GpuScene& scene) {
 
 // Half floats hold up to 65504; keep a margin for filtering and for the albedo/pi term.
 constexpr float HALF_SAFE_MAX = 30000.f;
+
+// One accumulation pass over every triangle: the small pass, then the big triangles it
+// listed (one work group each). The images of the pass's accumulators are bound.
+void accumulateTriangles(const GpuScene& scene, const VoxelGrid& grid, const GlBuffer& bigList, GLuint smallPass,
+                         GLuint bigPass) {
+    if (scene.triangleCount == 0) return;
+    const GLuint listed = 0;
+    glNamedBufferSubData(bigList.id(), 0, sizeof(listed), &listed);
+    for (GLuint p : {smallPass, bigPass}) {
+        setUniform(p, "uGridOrigin", grid.origin);
+        setUniform(p, "uInvVoxelSize", 1.f / grid.voxelSize);
+        setUniform(p, "uResolution", grid.resolution);
+        glProgramUniform1ui(p, glGetUniformLocation(p, "uTriangleCount"), GLuint(scene.triangleCount));
+    }
+    glUseProgram(smallPass);
+    glDispatchCompute(groupCount(scene.triangleCount, gpu::VOX_TRI_GROUP), 1, 1);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    // The big-triangle count comes back to the CPU: llvmpipe was seen to run an indirect
+    // dispatch with arguments read before the small pass finished (despite
+    // GL_COMMAND_BARRIER_BIT), silently dropping every big triangle.
+    uint32_t bigCount = 0;
+    glGetNamedBufferSubData(bigList.id(), 0, sizeof(uint32_t), &bigCount);
+    glUseProgram(bigPass);
+    const uint32_t maxGroups = 65535;  // the GL minimum of GL_MAX_COMPUTE_WORK_GROUP_COUNT
+    for (uint32_t base = 0; base < bigCount; base += maxGroups) {
+        glProgramUniform1ui(bigPass, glGetUniformLocation(bigPass, "uBigBase"), base);
+        glDispatchCompute(std::min(maxGroups, bigCount - base), 1, 1);
+    }
+    // Image writes before the next pass's atomics and the resolve's texel fetches.
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
+                    GL_BUFFER_UPDATE_BARRIER_BIT);
+}
 
 }  // namespace
 
@@ -70,58 +104,44 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     const bool useFloat = precision == "float" || (precision == "auto" && maxEmission > HALF_SAFE_MAX);
     const GLenum emissionFormat = useFloat ? GL_RGBA32F : GL_RGBA16F;
 
-    ShaderDefines defines;
-    if (hasEmission) defines.push_back({"HAS_EMISSION", "1"});
-    ShaderDefines bigDefines = defines;
-    bigDefines.push_back({"BIG_PASS", "1"});
-    ShaderDefines resolveDefines = defines;
-    resolveDefines.push_back({"EMISSION_FORMAT", glslImageFormat(emissionFormat)});
-    resolveDefines.push_back({"EMISSION_FORMAT_MAX", formatMaxLiteral(emissionFormat)});
-    GlProgram smallPass = buildComputeProgram("voxelize/voxelize.glsl", defines);
-    GlProgram bigPass = buildComputeProgram("voxelize/voxelize.glsl", bigDefines);
-    GlProgram resolve = buildComputeProgram("voxelize/resolve.glsl", resolveDefines);
+    // Programs first, so a first-use compile is not timed as voxelization.
+    const GLuint resolve = cachedProgram(resolveProgramKey(hasEmission, emissionFormat));
+    GLuint accumulate[2][2] = {};  // [emission pass][big pass]
+    for (int e = 0; e < (hasEmission ? 2 : 1); ++e)
+        for (int big = 0; big < 2; ++big) accumulate[e][big] = cachedProgram(voxelizeProgramKey(e != 0, big != 0));
 
     auto scope = timer.scope(scopeName);
     const glm::ivec3 res = grid.resolution;
 
-    // Accumulators, zeroed.
-    const int accumulatorCount = hasEmission ? gpu::VOX_UNIT_EMISSION + 6 : gpu::VOX_UNIT_EMISSION;
+    // Accumulators, zeroed; nearest filtering, as integer textures must be for texelFetch.
+    const int accumulatorCount = hasEmission ? gpu::VOX_ACC_COUNT : gpu::VOX_ACC_EMISSION;
     std::vector<GlTexture> acc;
     for (int i = 0; i < accumulatorCount; ++i) {
         acc.push_back(createTexture3D(GL_R32UI, res.x, res.y, res.z));
+        glTextureParameteri(acc.back().id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(acc.back().id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         const GLuint zero = 0;
         glClearTexImage(acc.back().id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-        bindImage3D(GLuint(i), acc.back().id(), 0, GL_READ_WRITE, GL_R32UI);
     }
     // Big-triangle list: header {count, -, -, occupied voxels}, then triangle ids.
     std::vector<uint32_t> header = {0, 1, 1, 0};
     header.resize(4 + size_t(std::max(1, scene.triangleCount)), 0);
+    checkStorageBufferSize(header.size() * sizeof(uint32_t), "voxelize: the big-triangle list of " +
+                                                                 std::to_string(scene.triangleCount) + " triangles");
     GlBuffer bigList = createBuffer(header.size() * sizeof(uint32_t), header.data());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::VOX_BINDING_BIGLIST, bigList.id());
-
     bindSceneBuffers(scene);
-    for (GLuint p : {smallPass.id(), bigPass.id()}) {
-        setUniform(p, "uGridOrigin", grid.origin);
-        setUniform(p, "uInvVoxelSize", 1.f / grid.voxelSize);
-        setUniform(p, "uResolution", res);
-        glProgramUniform1ui(p, glGetUniformLocation(p, "uTriangleCount"), GLuint(scene.triangleCount));
-    }
-    if (scene.triangleCount > 0) {
-        glUseProgram(smallPass.id());
-        glDispatchCompute(groupCount(scene.triangleCount, gpu::VOX_TRI_GROUP), 1, 1);
-        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-        // The big-triangle count comes back to the CPU: llvmpipe was seen to run an indirect
-        // dispatch with arguments read before the small pass finished (despite
-        // GL_COMMAND_BARRIER_BIT), silently dropping every big triangle.
-        uint32_t bigCount = 0;
-        glGetNamedBufferSubData(bigList.id(), 0, sizeof(uint32_t), &bigCount);
-        glUseProgram(bigPass.id());
-        const uint32_t maxGroups = 65535;  // the GL minimum of GL_MAX_COMPUTE_WORK_GROUP_COUNT
-        for (uint32_t base = 0; base < bigCount; base += maxGroups) {
-            glProgramUniform1ui(bigPass.id(), glGetUniformLocation(bigPass.id(), "uBigBase"), base);
-            glDispatchCompute(std::min(maxGroups, bigCount - base), 1, 1);
-        }
-        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+
+    // The geometry pass, then (emission only) the emission pass: each binds its own
+    // accumulators as images (voxelize_shared.h).
+    for (bool emissionPass : {false, true}) {
+        if (emissionPass && !hasEmission) break;
+        const int first = emissionPass ? gpu::VOX_ACC_EMISSION : 0;
+        const int last = emissionPass ? gpu::VOX_ACC_COUNT : gpu::VOX_ACC_EMISSION;
+        for (int i = first; i < last; ++i)
+            bindImage3D(GLuint(i - first), acc[size_t(i)].id(), 0, GL_READ_WRITE, GL_R32UI);
+        accumulateTriangles(scene, grid, bigList, accumulate[emissionPass][0], accumulate[emissionPass][1]);
+        for (int i = first; i < last; ++i) glBindImageTexture(GLuint(i - first), 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
     }
 
     // Resolve into the contract's float textures.
@@ -130,13 +150,13 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     // Normals carry mips (filled with the radiance's: voxelize/mips.cpp) for the facing test.
     grid.normal = createTexture3D(GL_RGBA16F, res.x, res.y, res.z, grid.levels);
     grid.emission = createTexture3D(emissionFormat, res.x, res.y, res.z);
-    for (int i = 0; i < accumulatorCount; ++i) bindImage3D(GLuint(i), acc[size_t(i)].id(), 0, GL_READ_ONLY, GL_R32UI);
-    bindImage3D(13, grid.opacity.id(), 0, GL_WRITE_ONLY, GL_R16F);
-    bindImage3D(14, grid.albedo.id(), 0, GL_WRITE_ONLY, GL_RGBA16F);
-    bindImage3D(15, grid.normal.id(), 0, GL_WRITE_ONLY, GL_RGBA16F);
-    bindImage3D(16, grid.emission.id(), 0, GL_WRITE_ONLY, emissionFormat);
-    setUniform(resolve.id(), "uResolution", res);
-    glUseProgram(resolve.id());
+    for (int i = 0; i < accumulatorCount; ++i) glBindTextureUnit(GLuint(i), acc[size_t(i)].id());
+    bindImage3D(gpu::VOX_IMAGE_RESOLVE_OPACITY, grid.opacity.id(), 0, GL_WRITE_ONLY, GL_R16F);
+    bindImage3D(gpu::VOX_IMAGE_RESOLVE_ALBEDO, grid.albedo.id(), 0, GL_WRITE_ONLY, GL_RGBA16F);
+    bindImage3D(gpu::VOX_IMAGE_RESOLVE_NORMAL, grid.normal.id(), 0, GL_WRITE_ONLY, GL_RGBA16F);
+    bindImage3D(gpu::VOX_IMAGE_RESOLVE_EMISSION, grid.emission.id(), 0, GL_WRITE_ONLY, emissionFormat);
+    setUniform(resolve, "uResolution", res);
+    glUseProgram(resolve);
     const int g = gpu::VOX_GRID_GROUP;
     glDispatchCompute(groupCount(res.x, g), groupCount(res.y, g), groupCount(res.z, g));
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -144,8 +164,10 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     glGetNamedBufferSubData(bigList.id(), 3 * sizeof(uint32_t), sizeof(uint32_t), &occupied);
     grid.occupiedVoxels = occupied;
 
-    // Leave no image bound to the (about to be freed) accumulators.
-    for (int i = 0; i <= 16; ++i) glBindImageTexture(GLuint(i), 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    // Leave nothing bound to the (about to be freed) accumulators.
+    for (int i = 0; i < accumulatorCount; ++i) glBindTextureUnit(GLuint(i), 0);
+    for (int i = gpu::VOX_IMAGE_RESOLVE_OPACITY; i <= gpu::VOX_IMAGE_RESOLVE_EMISSION; ++i)
+        glBindImageTexture(GLuint(i), 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
     glUseProgram(0);
     grid.memoryBytes = voxelGridMemoryBytes(grid);
     return grid;

@@ -1,0 +1,61 @@
+#include "cone/cone_programs.h"
+
+#include "cone/cone_shared.h"
+#include "voxelize/voxel_gl.h"
+
+namespace vct {
+
+namespace {
+ShaderDefines coneDefines(bool gi, bool aniso) { return {{"CONE_GI", gi ? "1" : "0"}, {"CONE_ANISO", aniso ? "1" : "0"}}; }
+}  // namespace
+
+ProgramKey conePassProgramKey(bool gi, bool aniso) {
+    return computeProgramKey(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl", coneDefines(gi, aniso));
+}
+
+ProgramKey clipmapConePassProgramKey(bool gi) {
+    return computeProgramKey(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl",
+                             {{"CONE_GI", gi ? "1" : "0"}, {"CONE_CLIPMAP", "1"}});
+}
+
+ProgramKey coneBounceProgramKey(bool aniso, GLenum radianceFormat, bool listPass) {
+    ShaderDefines d = coneDefines(true, aniso);
+    d.push_back({"RADIANCE_FORMAT", glslImageFormat(radianceFormat)});
+    d.push_back({"RADIANCE_FORMAT_MAX", formatMaxLiteral(radianceFormat)});
+    if (listPass) d.push_back({"BOUNCE_LIST", "1"});
+    return computeProgramKey("cone/cone_bounce.glsl", d);
+}
+
+ProgramKey voxelViewProgramKey(int channel) {
+    // The channel is a preprocessor switch: GLSL `const int`s are not visible to #if.
+    ShaderDefines d;
+    if (channel == gpu::CONE_CHANNEL_RADIANCE) d = {{"CONE_VIEW_RADIANCE", "1"}};
+    if (channel == gpu::CONE_CHANNEL_ALBEDO) d = {{"CONE_VIEW_ALBEDO", "1"}};
+    return computeProgramKey("cone/cone_raymarch.glsl", d);
+}
+
+ProgramKey coneCountProgramKey(bool gi, bool aniso) {
+    return computeProgramKey("bench/cone_count.glsl", coneDefines(gi, aniso));
+}
+
+ProgramKey fetchBenchProgramKey() { return computeProgramKey("bench/fetch.glsl"); }
+
+std::vector<ProgramKey> coneProgramVariants() {
+    std::vector<ProgramKey> v;
+    for (bool gi : {false, true}) {
+        for (bool aniso : {false, true}) {
+            v.push_back(conePassProgramKey(gi, aniso));
+            v.push_back(coneCountProgramKey(gi, aniso));
+        }
+        v.push_back(clipmapConePassProgramKey(gi));
+    }
+    for (bool aniso : {false, true})
+        for (GLenum f : {GLenum(GL_RGBA16F), GLenum(GL_RGBA32F)})
+            for (bool list : {false, true}) v.push_back(coneBounceProgramKey(aniso, f, list));
+    for (int c : {gpu::CONE_CHANNEL_OPACITY, gpu::CONE_CHANNEL_ALBEDO, gpu::CONE_CHANNEL_RADIANCE})
+        v.push_back(voxelViewProgramKey(c));
+    v.push_back(fetchBenchProgramKey());
+    return v;
+}
+
+}  // namespace vct

@@ -1,0 +1,26 @@
+#include "raster/raster_programs.h"
+
+namespace vct {
+
+ProgramKey gbufferProgramKey(bool textures, bool alphaMask) {
+    ShaderDefines d;
+    if (!textures) d.push_back({"SCENE_NO_TEXTURES", "1"});
+    if (!alphaMask) d.push_back({"SCENE_NO_ALPHA_MASK", "1"});
+    return graphicsProgramKey("raster/gbuffer_vert.glsl", "raster/gbuffer_frag.glsl", d);
+}
+
+ProgramKey shadowProgramKey() { return graphicsProgramKey("raster/shadow_vert.glsl", "raster/shadow_frag.glsl"); }
+ProgramKey directLightProgramKey() { return computeProgramKey("raster/direct_comp.glsl"); }
+ProgramKey compositeProgramKey() { return computeProgramKey("raster/composite_comp.glsl"); }
+
+std::vector<ProgramKey> rasterProgramVariants() {
+    std::vector<ProgramKey> v;
+    for (bool textures : {false, true})
+        for (bool alpha : {false, true}) v.push_back(gbufferProgramKey(textures, alpha));
+    v.push_back(shadowProgramKey());
+    v.push_back(directLightProgramKey());
+    v.push_back(compositeProgramKey());
+    return v;
+}
+
+}  // namespace vct

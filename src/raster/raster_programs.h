@@ -1,0 +1,19 @@
+// The rasterization and lighting passes' programs, each built by one key function
+// (gl/program_cache.h) so the passes and the list of every variant agree.
+#pragma once
+
+#include "gl/program_cache.h"
+
+#include <vector>
+
+namespace vct {
+
+// The G-buffer: texture sampling and the alpha test compiled out where the scene has none.
+ProgramKey gbufferProgramKey(bool textures, bool alphaMask);
+ProgramKey shadowProgramKey();
+ProgramKey directLightProgramKey();
+ProgramKey compositeProgramKey();
+
+std::vector<ProgramKey> rasterProgramVariants();
+
+}  // namespace vct

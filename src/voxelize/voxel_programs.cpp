@@ -1,0 +1,64 @@
+#include "voxelize/voxel_programs.h"
+
+#include "voxelize/voxel_gl.h"
+
+namespace vct {
+
+ProgramKey voxelizeProgramKey(bool emissionPass, bool bigPass) {
+    ShaderDefines d;
+    if (emissionPass) d.push_back({"EMISSION_PASS", "1"});
+    if (bigPass) d.push_back({"BIG_PASS", "1"});
+    return computeProgramKey("voxelize/voxelize.glsl", d);
+}
+
+ProgramKey resolveProgramKey(bool hasEmission, GLenum emissionFormat) {
+    ShaderDefines d;
+    if (hasEmission) d.push_back({"HAS_EMISSION", "1"});
+    d.push_back({"EMISSION_FORMAT", glslImageFormat(emissionFormat)});
+    d.push_back({"EMISSION_FORMAT_MAX", formatMaxLiteral(emissionFormat)});
+    return computeProgramKey("voxelize/resolve.glsl", d);
+}
+
+ProgramKey injectProgramKey(GLenum radianceFormat, int outerLevels) {
+    ShaderDefines d = {{"RADIANCE_FORMAT", glslImageFormat(radianceFormat)},
+                       {"RADIANCE_FORMAT_MAX", formatMaxLiteral(radianceFormat)}};
+    if (outerLevels > 0) d.push_back({"OUTER_LEVELS", std::to_string(outerLevels)});
+    return computeProgramKey("voxelize/inject.glsl", d);
+}
+
+ProgramKey isotropicMipProgramKey(GLenum radianceFormat, bool normals) {
+    ShaderDefines d;
+    if (radianceFormat != 0) d = {{"HAS_RADIANCE", "1"}, {"RADIANCE_FORMAT", glslImageFormat(radianceFormat)}};
+    if (normals) d.push_back({"HAS_NORMAL", "1"});
+    return computeProgramKey("voxelize/mip_iso.glsl", d);
+}
+
+ProgramKey anisotropicMipProgramKey(GLenum srcFormat, GLenum dstFormat) {
+    ShaderDefines d = {{"SRC_FORMAT", glslImageFormat(srcFormat)}, {"DST_FORMAT", glslImageFormat(dstFormat)}};
+    if (srcFormat == GL_R16F) d.push_back({"SOURCE_OPACITY", "1"});
+    return computeProgramKey("voxelize/mip_aniso.glsl", d);
+}
+
+ProgramKey clipmapNestProgramKey(GLenum dstFormat) {
+    return computeProgramKey("voxelize/clipmap_nest.glsl", {{"DST_FORMAT", glslImageFormat(dstFormat)}});
+}
+
+std::vector<ProgramKey> voxelProgramVariants() {
+    std::vector<ProgramKey> v;
+    const GLenum radianceFormats[] = {GL_RGBA16F, GL_RGBA32F};
+    for (bool emission : {false, true})
+        for (bool big : {false, true}) v.push_back(voxelizeProgramKey(emission, big));
+    for (bool emission : {false, true})
+        for (GLenum f : radianceFormats) v.push_back(resolveProgramKey(emission, f));
+    for (GLenum f : radianceFormats)
+        for (int outer = 0; outer <= 7; ++outer) v.push_back(injectProgramKey(f, outer));
+    v.push_back(isotropicMipProgramKey(0, false));
+    for (GLenum f : radianceFormats)
+        for (bool normals : {false, true}) v.push_back(isotropicMipProgramKey(f, normals));
+    v.push_back(anisotropicMipProgramKey(GL_R16F, GL_RGBA16F));
+    for (GLenum f : radianceFormats) v.push_back(anisotropicMipProgramKey(f, f));
+    for (GLenum f : {GLenum(GL_R16F), GLenum(GL_RGBA16F), GLenum(GL_RGBA32F)}) v.push_back(clipmapNestProgramKey(f));
+    return v;
+}
+
+}  // namespace vct

@@ -1,0 +1,28 @@
+// The programs of voxelization, injection, mips and clipmap nesting, each built by one key
+// function (gl/program_cache.h) so the passes and the list of every variant agree.
+#pragma once
+
+#include "gl/program_cache.h"
+
+#include <vector>
+
+namespace vct {
+
+// voxelize.glsl: the geometry or the emission accumulation, small or big-triangle pass.
+ProgramKey voxelizeProgramKey(bool emissionPass, bool bigPass);
+// resolve.glsl: reads the emission accumulators when the scene has emission; writes emission
+// in `emissionFormat` (GL_RGBA16F or GL_RGBA32F).
+ProgramKey resolveProgramKey(bool hasEmission, GLenum emissionFormat);
+// inject.glsl: radiance in `radianceFormat`; `outerLevels` clipmap levels continue shadow rays.
+ProgramKey injectProgramKey(GLenum radianceFormat, int outerLevels);
+// mip_iso.glsl: opacity, and radiance (radianceFormat != 0) and normals when the grid has them.
+ProgramKey isotropicMipProgramKey(GLenum radianceFormat, bool normals);
+// mip_aniso.glsl: one directional level from `srcFormat` (GL_R16F: the opacity base level).
+ProgramKey anisotropicMipProgramKey(GLenum srcFormat, GLenum dstFormat);
+// clipmap_nest.glsl: a finer level's mip 1 into a coarser level's base, in `dstFormat`.
+ProgramKey clipmapNestProgramKey(GLenum dstFormat);
+
+// Every variant the functions above can return for the formats the grids use.
+std::vector<ProgramKey> voxelProgramVariants();
+
+}  // namespace vct
