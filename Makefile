@@ -1,6 +1,8 @@
 # The user's entry points. Each target installs missing Debian packages first (idempotent),
 # configures and builds with CMake, then does its job.
-#   make render   -> out/default.png (the default scene, screen-space AO)
+#   make render   -> out/default.png: VCT diffuse GI on the default scene, out/default_ao.png:
+#                    its VCT ambient occlusion, out/default.json: timings and the pass plan
+#   make render METHOD=gtao -> the same scene with GTAO (screen-space AO) instead
 #   make test     -> the whole test suite through ctest (CPU, GPU on llvmpipe, CLI)
 #   make asan     -> the suite again under AddressSanitizer + UndefinedBehaviorSanitizer
 BUILD ?= build
@@ -13,16 +15,29 @@ CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 deps:
 	@bash scripts/install-deps.sh
 
-$(BUILD)/CMakeCache.txt: | deps
-	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
+METHOD ?= vct
+RENDER = ./$(BUILD)/vct render scenes/default.gltf --size 512 --radius 0.5 --exposure -1
 
-build: deps $(BUILD)/CMakeCache.txt
+# The stamp is written only after a configure succeeded: a failed one (a missing package)
+# leaves CMakeCache.txt behind, which must not pass for a finished configure.
+$(BUILD)/.configured: | deps
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
+	@touch $@
+
+build: deps $(BUILD)/.configured
 	cmake --build $(BUILD) -j $(JOBS)
 
 render: build
 	@mkdir -p out
-	./$(BUILD)/vct render scenes/default.gltf --size 512 --ao gtao --radius 0.5 --exposure -1.5 -o out/default.png --stats out/default.json
-	@echo "wrote out/default.png (timings and pass plan in out/default.json)"
+ifeq ($(METHOD),vct)
+	$(RENDER) --gi vct --ao vct --voxel-res 64 -o out/default.png --stats out/default.json
+	$(RENDER) --ao vct --voxel-res 64 --aov ao -o out/default_ao.png
+	@echo "wrote out/default.png (VCT GI), out/default_ao.png (VCT AO); timings and pass plan in out/default.json"
+else
+	$(RENDER) --ao $(METHOD) -o out/default.png --stats out/default.json
+	$(RENDER) --ao $(METHOD) --aov ao -o out/default_ao.png
+	@echo "wrote out/default.png and out/default_ao.png ($(METHOD)); timings and pass plan in out/default.json"
+endif
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) --timeout 900
