@@ -101,6 +101,9 @@ SceneBuilder courtyard() {
     // A glowing panel on the back wall, 1 cm in front of it, facing +Z.
     b.addQuad("glow_panel", glm::vec3(2.f, 1.2f, -4.69f), glm::vec3(1.5f, 0.f, 0.f),
               glm::vec3(0.f, 0.6f, 0.f), glow);
+    // A post just right of the view, 0.1 m from visible floor: it darkens the floor beside the
+    // crates, which only a world-space method sees.
+    offscreenBox(b, "post", glm::vec3(3.45f, 0.f, 0.35f), glm::vec3(3.75f, 2.4f, 0.65f), terracotta);
     addSun(b, 3.f);
     b.addPointLight("lamp", glm::vec3(-1.3f, 1.6f, 0.7f), glm::vec3(1.f, 0.8f, 0.55f), 3.f);
     b.addCamera("main", glm::vec3(4.f, 2.8f, 5.2f), glm::vec3(-0.8f, 0.8f, -1.5f), glm::radians(50.f), 0.1f,
