@@ -11,7 +11,7 @@
 #include "reference/reference_gi.h"
 #include "reference/sampler.h"
 #include "reference/sampling_math.h"
-#include "render/view.h"
+#include "core/view.h"
 #include "scene/gltf_loader.h"
 
 #include <tbb/blocked_range.h>

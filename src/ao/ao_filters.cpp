@@ -5,23 +5,30 @@
 
 namespace vct {
 
-AoBlurSettings readAoBlurSettings(const ParamMap& params, bool boxAllowed) {
-    AoBlurSettings s;
-    s.enabled = params.getBool("blur", s.enabled, "screen-space AO: blur the estimate (1) or not (0)");
-    std::string mode = params.getChoice("blur.mode", "bilateral", {"bilateral", "box"},
-                                        "screen-space AO blur: depth/normal-aware bilateral, or the 4x4 box "
-                                        "(ssao-crytek, ssao-hemisphere only)");
-    if (mode == "box" && !boxAllowed)
-        throw std::invalid_argument("--param blur.mode=box: only ssao-crytek and ssao-hemisphere have the 4x4 "
-                                    "noise tile the box blur is made for");
-    s.mode = mode == "box" ? AoBlurMode::Box : AoBlurMode::Bilateral;
-    s.radius = params.getInt("blur.radius", s.radius, 0, gpu::BLUR_MAX_RADIUS,
-                             "bilateral blur: taps each side of the centre");
-    s.sigma = params.getFloat("blur.sigma", s.sigma, 0.25f, 32.f, "bilateral blur: spatial Gaussian sigma, pixels");
-    s.depthSigma = params.getFloat("blur.depth-sigma", s.depthSigma, 1e-4f, 1.f,
-                                   "bilateral blur and upsample: depth sigma as a fraction of the centre depth");
-    s.normalPower = params.getFloat("blur.normal-power", s.normalPower, 0.f, 128.f,
-                                    "bilateral blur and upsample: exponent p of max(0, n.n_i)^p");
+const SettingsTable<AoFilterSettings>& aoFilterSettings() {
+    static const auto table =
+        SettingsTable<AoFilterSettings>()
+            .flag("blur", &AoFilterSettings::blur, "screen-space AO: blur the estimate (1) or not (0)")
+            .choice("blur.mode", &AoFilterSettings::mode, {{"bilateral", AoBlurMode::Bilateral}, {"box", AoBlurMode::Box}},
+                    "screen-space AO blur: depth/normal-aware bilateral, or the 4x4 box (ssao-crytek, "
+                    "ssao-hemisphere only)")
+            .integer("blur.radius", &AoFilterSettings::radius, 0, gpu::BLUR_MAX_RADIUS,
+                     "bilateral blur: taps each side of the centre")
+            .real("blur.sigma", &AoFilterSettings::sigma, 0.25f, 32.f, "bilateral blur: spatial Gaussian sigma, pixels")
+            .real("blur.depth-sigma", &AoFilterSettings::depthSigma, 1e-4f, 1.f,
+                  "bilateral blur and upsample: depth sigma as a fraction of the centre depth")
+            .real("blur.normal-power", &AoFilterSettings::normalPower, 0.f, 128.f,
+                  "bilateral blur and upsample: exponent p of max(0, n.n_i)^p")
+            .flag("ao.half-res", &AoFilterSettings::halfRes,
+                  "screen-space AO: evaluate at half resolution, then a depth-aware upsample");
+    return table;
+}
+
+AoFilterSettings readAoFilterSettings(const ParamMap& params, bool boxAllowed) {
+    AoFilterSettings s = aoFilterSettings().read(params);
+    if (s.mode == AoBlurMode::Box && !boxAllowed)
+        throw UsageError("--param blur.mode=box: only ssao-crytek and ssao-hemisphere have the 4x4 noise tile the box "
+                         "blur is made for");
     return s;
 }
 
@@ -41,7 +48,7 @@ std::vector<float> bilateralGaussianWeights(int radius, float sigma) {
     return out;
 }
 
-GlTexture runBilateralBlur(const AoPassContext& ctx, const GlTexture& ao, const AoBlurSettings& settings,
+GlTexture runBilateralBlur(const AoPassContext& ctx, const GlTexture& ao, const AoFilterSettings& settings,
                            bool lastPass) {
     gpu::BlurUniforms u{};
     std::vector<float> weights = bilateralGaussianWeights(settings.radius, settings.sigma);
@@ -75,7 +82,7 @@ GlTexture runBoxBlur(const AoPassContext& ctx, const GlTexture& ao) {
     return out;
 }
 
-GlTexture runDepthAwareUpsample(const AoPassContext& ctx, const GlTexture& ao, const AoBlurSettings& settings) {
+GlTexture runDepthAwareUpsample(const AoPassContext& ctx, const GlTexture& ao, const AoFilterSettings& settings) {
     gpu::BlurUniforms u{};
     u.config = glm::ivec4(0, 0, 1, 0);
     u.terms = glm::vec4(settings.depthSigma, settings.normalPower, 1.f, 0.f);

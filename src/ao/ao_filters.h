@@ -5,7 +5,7 @@
 
 #include "ao/ao_pass.h"
 #include "ao/blur_shared.h"
-#include "render/params.h"
+#include "core/settings.h"
 
 #include <vector>
 
@@ -13,18 +13,21 @@ namespace vct {
 
 enum class AoBlurMode { Bilateral, Box };
 
-struct AoBlurSettings {
-    bool enabled = true;
+// What follows a screen-space evaluation (ranges and docs in aoFilterSettings()).
+struct AoFilterSettings {
+    bool blur = true;
     AoBlurMode mode = AoBlurMode::Bilateral;
-    int radius = gpu::BLUR_DEFAULT_RADIUS;                  // taps each side, [0, 16]
-    float sigma = gpu::BLUR_DEFAULT_SIGMA;                  // spatial Gaussian, pixels, [0.25, 32]
-    float depthSigma = gpu::BLUR_DEFAULT_DEPTH_SIGMA;       // fraction of the centre depth, [1e-4, 1]
-    float normalPower = gpu::BLUR_DEFAULT_NORMAL_POWER;     // exponent of max(0, n.n_i), [0, 128]
+    int radius = gpu::BLUR_DEFAULT_RADIUS;               // taps each side
+    float sigma = gpu::BLUR_DEFAULT_SIGMA;               // spatial Gaussian, pixels
+    float depthSigma = gpu::BLUR_DEFAULT_DEPTH_SIGMA;    // fraction of the centre depth
+    float normalPower = gpu::BLUR_DEFAULT_NORMAL_POWER;  // exponent of max(0, n.n_i)
+    bool halfRes = false;  // evaluate at half resolution, then a depth-aware upsample
 };
+const SettingsTable<AoFilterSettings>& aoFilterSettings();
 
 // `boxAllowed`: the method has a 4x4 noise tile for the box blur to undo (ssao-crytek,
-// ssao-hemisphere); asking for the box elsewhere is an error.
-AoBlurSettings readAoBlurSettings(const ParamMap& params, bool boxAllowed);
+// ssao-hemisphere); asking for the box elsewhere is a UsageError.
+AoFilterSettings readAoFilterSettings(const ParamMap& params, bool boxAllowed);
 
 // w_0 .. w_radius of a 1D Gaussian of standard deviation sigma, normalized so that the full
 // symmetric kernel sums to 1: w_0 + 2 sum_{i>0} w_i = 1. radius 0 gives {1}.
@@ -32,11 +35,11 @@ std::vector<float> bilateralGaussianWeights(int radius, float sigma);
 
 // Separable bilateral blur (x then y) of an evaluation-resolution AO texture. `lastPass`:
 // clamp the result to [0, 1] (else to AO_WORKING_MAX, for the upsample that follows).
-GlTexture runBilateralBlur(const AoPassContext& ctx, const GlTexture& ao, const AoBlurSettings& settings,
+GlTexture runBilateralBlur(const AoPassContext& ctx, const GlTexture& ao, const AoFilterSettings& settings,
                            bool lastPass = true);
 GlTexture runBoxBlur(const AoPassContext& ctx, const GlTexture& ao);
 // Half-resolution AO (ctx.scale 2) to the G-buffer's resolution; uses the blur's depth and
 // normal terms.
-GlTexture runDepthAwareUpsample(const AoPassContext& ctx, const GlTexture& ao, const AoBlurSettings& settings);
+GlTexture runDepthAwareUpsample(const AoPassContext& ctx, const GlTexture& ao, const AoFilterSettings& settings);
 
 }  // namespace vct

@@ -47,14 +47,6 @@ void bindAoPassInputs(const AoPassContext& ctx) {
     glBindTextureUnit(gpu::AO_UNIT_ALBEDO, ctx.gbuffer->albedo.id());
 }
 
-std::vector<ProgramKey> screenSpaceAoProgramVariants() {
-    std::vector<ProgramKey> keys;
-    for (const char* shader : {"ao/ssao.glsl", "ao/horizon.glsl", "ao/alchemy.glsl", "ao/hbao.glsl", "ao/gtao.glsl",
-                               "ao/bilateral_blur.glsl", "ao/box_blur.glsl", "ao/upsample.glsl"})
-        keys.push_back(computeProgramKey(shader));
-    return keys;
-}
-
 GlTexture createAoTexture(int width, int height) { return createTexture2D(GL_R32F, width, height); }
 
 void dispatchAoPass(GLuint program, const GlTexture& output, int width, int height) {

@@ -5,8 +5,8 @@
 #include "ao/ao_shared.h"
 #include "gl/handles.h"
 #include "gl/program_cache.h"
-#include "render/gbuffer.h"
-#include "render/view.h"
+#include "core/gbuffer.h"
+#include "core/view.h"
 
 #include <cstdint>
 #include <string>
@@ -33,8 +33,6 @@ AoPassContext makeAoPassContext(const GBuffer& gbuffer, const View& view, float 
 // Binds the view block and the G-buffer textures the AO shaders read (position, normal, albedo).
 void bindAoPassInputs(const AoPassContext& ctx);
 
-// Every program of the screen-space AO passes (none has variants: each is one shader).
-std::vector<ProgramKey> screenSpaceAoProgramVariants();
 
 GlTexture createAoTexture(int width, int height);  // R32F, nearest, clamp to edge
 

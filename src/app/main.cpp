@@ -3,7 +3,7 @@
 // GL error), 2 usage (unknown option, malformed or out-of-range value, unimplemented).
 #include "app/commands.h"
 #include "app/render_options.h"
-#include "render/params.h"
+#include "methods/registry.h"
 
 #include <CLI/CLI.hpp>
 
@@ -38,8 +38,8 @@ int main(int argc, char** argv) {
     render->add_option("--target", ro.target, "camera target X,Y,Z (with --eye)");
     render->add_option("--fov", ro.fovDeg, "vertical field of view in degrees (with --eye, or the default framing)")
         ->capture_default_str()->check(CLI::Range(0.01f, 179.9f));
-    render->add_option("--ao", ro.ao, "AO method: " + methodsHelp(aoMethods()))->capture_default_str();
-    render->add_option("--gi", ro.gi, "GI method: " + methodsHelp(giMethods()))->capture_default_str();
+    render->add_option("--ao", ro.ao, "AO method: " + methodsHelp(methodNames(MethodKind::AO)))->capture_default_str();
+    render->add_option("--gi", ro.gi, "GI method: " + methodsHelp(methodNames(MethodKind::GI)))->capture_default_str();
     render->add_option("--radius", ro.radius, "AO radius R in world units (shared by every AO method)")
         ->capture_default_str();
     render->add_option("--spp", ro.spp, "reference samples per pixel")->capture_default_str();

@@ -3,6 +3,7 @@
 #include "eval/image_io.h"
 #include "gl/context.h"
 #include "gl/program_limits.h"
+#include "methods/registry.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "util/atomic_file.h"
@@ -50,8 +51,8 @@ RenderRequest makeRenderRequest(const RenderOptions& o, const Scene& scene) {
             throw std::invalid_argument(opt + " '" + v + "': expected one of " + all);
         }
     };
-    oneOf(o.ao, aoMethods(), "--ao");
-    oneOf(o.gi, giMethods(), "--gi");
+    requireMethod(MethodKind::AO, o.ao, "--ao");
+    requireMethod(MethodKind::GI, o.gi, "--gi");
     oneOf(o.backend, {"gl", "vdb"}, "--backend");
     r.ao = o.ao;
     r.gi = o.gi;
@@ -72,7 +73,7 @@ RenderRequest makeRenderRequest(const RenderOptions& o, const Scene& scene) {
     for (const auto& a : r.aovs)
         if (!findAov(a)) {
             std::string all;
-            for (const auto& k : knownAovs()) all += (all.empty() ? "" : ", ") + std::string(k.name);
+            for (const auto& k : knownAovs()) all += (all.empty() ? "" : ", ") + k.name;
             throw std::invalid_argument("--aov '" + a + "': unknown AOV (known: " + all + ")");
         }
     for (const auto& p : o.params) r.params.set(p);

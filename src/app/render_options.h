@@ -3,7 +3,7 @@
 #pragma once
 
 #include "image/image.h"
-#include "render/request.h"
+#include "core/request.h"
 #include "scene/camera.h"
 
 #include <map>

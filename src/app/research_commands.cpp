@@ -5,8 +5,9 @@
 #include "app/sweep_commands.h"
 #include "eval/comparison.h"
 #include "gl/context.h"
-#include "render/method_params.h"
-#include "render/params.h"
+#include "methods/registry.h"
+#include "render/renderer.h"
+#include "core/params.h"
 #include "render/plan.h"
 #include "scene/gltf_loader.h"
 #include "util/atomic_file.h"
@@ -22,10 +23,17 @@ namespace vct {
 
 namespace {
 
+// Every method of `kind` but the ground truth, comma-separated: what compare scores by default.
+std::string defaultScoredMethods(MethodKind kind) {
+    std::string list;
+    for (const Method* m : scoredMethods(kind)) list += (list.empty() ? "" : ",") + m->name;
+    return list;
+}
+
 struct CompareOptions {
     RenderOptions render;  // scene, camera, size, radius, seed, voxel-res, sky, params, gl-device
     std::string outDir;
-    std::string aoMethods = "ssao-crytek,ssao-hemisphere,ssao-horizon,alchemy,hbao,gtao,vct";
+    std::string aoMethods;  // default: defaultScoredMethods(AO), set when the command is registered
     std::string giMethods;
     int refSpp = 256;
     int runs = 3;
@@ -128,6 +136,7 @@ void registerResearchCommands(CLI::App& app) {
     registerSweepCommands(app);
     registerGalleryCommand(app);
     CompareOptions& o = gCompare;
+    o.aoMethods = defaultScoredMethods(MethodKind::AO);
     gCompareCmd = app.add_subcommand("compare", "Score methods against the ray-traced reference on one view");
     gCompareCmd->add_option("scene", o.render.scenePath, "glTF 2.0 scene")->required();
     gCompareCmd->add_option("-o,--output", o.outDir, "output directory (images, results.json, results.csv)")
@@ -160,11 +169,12 @@ int runResearchCommand(CLI::App& app) {
 }
 
 std::string paramsHelpText() {
-    documentAllMethodParams();
+    std::vector<SettingDoc> docs = allSettingDocs();
+    std::sort(docs.begin(), docs.end(), [](const SettingDoc& a, const SettingDoc& b) { return a.key < b.key; });
     std::ostringstream out;
     out << "--param keys (KEY=VALUE):\n";
-    for (const auto& [key, d] : ParamMap::documented())
-        out << "  " << key << "  default " << d.defaultValue << "  range " << d.range
+    for (const SettingDoc& d : docs)
+        out << "  " << d.key << "  default " << d.defaultValue << "  range " << d.range
             << (d.doc.empty() ? "" : "  " + d.doc) << "\n";
     return out.str();
 }

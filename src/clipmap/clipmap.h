@@ -13,11 +13,11 @@
 #pragma once
 
 #include "cone/cone_settings.h"
-#include "render/gbuffer.h"
-#include "render/gpu_scene.h"
-#include "render/params.h"
-#include "render/timing.h"
-#include "render/view.h"
+#include "core/gbuffer.h"
+#include "core/gpu_scene.h"
+#include "core/params.h"
+#include "core/timing.h"
+#include "core/view.h"
 #include "voxelize/voxel_grid.h"
 
 #include <nlohmann/json.hpp>

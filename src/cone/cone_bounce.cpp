@@ -13,15 +13,17 @@ namespace vct {
 
 using namespace conedetail;
 
-int readVctBounces(const ParamMap& params) {
-    return params.getInt("vct.bounces", kDefaultVctBounces, 0, 8,
-                         "extra diffuse bounces traced between voxels (dense grid only; the vdb backend and "
-                         "clipmaps inject direct light only)");
+const SettingsTable<BounceSettings>& bounceSettings() {
+    static const auto table =
+        SettingsTable<BounceSettings>()
+            .integer("vct.bounces", &BounceSettings::bounces, 0, 8,
+                     "extra diffuse bounces traced between voxels (dense grid only; the vdb backend and clipmaps "
+                     "inject direct light only)")
+            .flag("vct.bounce.sky", &BounceSettings::sky, "bounce cones that escape see the sky radiance");
+    return table;
 }
 
-bool readVctBounceSky(const ParamMap& params) {
-    return params.getBool("vct.bounce.sky", true, "bounce cones that escape see the sky radiance");
-}
+int readVctBounces(const ParamMap& params) { return bounceSettings().read(params).bounces; }
 
 void refuseVctBounces(const ParamMap& params, bool injects, const std::string& where) {
     const int bounces = readVctBounces(params);
@@ -48,8 +50,9 @@ std::vector<VoxelListSlab> voxelListSlabs(const glm::ivec3& res, size_t occupied
 
 void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, const ParamMap& params,
                        PassTimer& timer) {
-    const int bounces = readVctBounces(params);
-    const bool bounceSky = readVctBounceSky(params);
+    const BounceSettings settings = bounceSettings().read(params);
+    const int bounces = settings.bounces;
+    const bool bounceSky = settings.sky;
     if (bounces == 0) return;
     if (!grid.radiance || !grid.albedo || !grid.normal)
         throw std::invalid_argument("traceVoxelBounces: the grid has no injected radiance");

@@ -5,14 +5,12 @@
 // fixed, so N bounces carry light over N + 1 reflections inside the grid, and the pixel
 // cones add one more: reference.bounces = N + 2 is the bounce-matched reference.
 //
-// Parameters (ParamMap keys):
-//   vct.bounces     0..8, default kDefaultVctBounces (1).
-//   vct.bounce.sky  0|1, default 1: bounce cones that escape see the sky radiance.
+// Keys, defaults, ranges and docs: bounceSettings() (vct.bounces, vct.bounce.sky).
 #pragma once
 
 #include "cone/cone_settings.h"
-#include "render/params.h"
-#include "render/timing.h"
+#include "core/settings.h"
+#include "core/timing.h"
 #include "voxelize/voxel_grid.h"
 
 #include <cstddef>
@@ -43,10 +41,12 @@ struct VoxelListSlab {
 // The slabs of a grid of `resolution` (each list within kMaxVoxelListEntries, count included).
 std::vector<VoxelListSlab> voxelListSlabs(const glm::ivec3& resolution, size_t occupiedVoxels);
 
-// Reads vct.bounces (range 0..8, default kDefaultVctBounces) with its --help-params line.
-int readVctBounces(const ParamMap& params);
-// Reads vct.bounce.sky (default 1) with its --help-params line.
-bool readVctBounceSky(const ParamMap& params);
+struct BounceSettings {
+    int bounces = kDefaultVctBounces;
+    bool sky = true;  // bounce cones that escape see the sky radiance
+};
+const SettingsTable<BounceSettings>& bounceSettings();
+int readVctBounces(const ParamMap& params);  // bounceSettings().read(params).bounces
 
 // For volumes that hold direct light only (the vdb backend, clipmaps): reads vct.bounces
 // and, when the volume `injects`, refuses an explicit request for bounces with

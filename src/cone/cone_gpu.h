@@ -6,7 +6,7 @@
 #include "cone/cone_shared.h"
 #include "gl/handles.h"
 #include "gl/program_cache.h"
-#include "render/gbuffer.h"
+#include "core/gbuffer.h"
 #include "voxelize/voxel_grid.h"
 
 #include <string>

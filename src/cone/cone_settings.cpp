@@ -31,34 +31,38 @@ void ConeSettings::validate() const {
             "maxAlpha " + std::to_string(maxAlpha) + " outside [0.5, 1]");
 }
 
+const SettingsTable<ConeSettings>& coneSettings() {
+    static const auto table =
+        SettingsTable<ConeSettings>()
+            .choice("vct.cones", &ConeSettings::coneCount, {{"6", 6}, {"16", 16}},
+                    "diffuse cone set: 6 (6 x 60 deg, Villegas) or 16 (16 x 50 deg, cosine-stratified spiral)")
+            .real("vct.aperture", &ConeSettings::apertureDeg,
+                  [](const ConeSettings& s) { return defaultConeAperture(s.coneCount); }, "60 (6 cones), 50 (16)", 1.f,
+                  179.f, "full cone aperture in degrees, open range (1, 179)")
+            .check([](const ConeSettings& s) {
+                if (!(s.apertureDeg > 1.f && s.apertureDeg < 179.f))
+                    throw UsageError("--param vct.aperture=" + std::to_string(s.apertureDeg) +
+                                     ": out of range (1, 179)");
+            })
+            .real("vct.step", &ConeSettings::stepFactor, 0.05f, 2.f, "step factor beta: step = beta * cone diameter")
+            .real("vct.offset", &ConeSettings::offsetVoxels, 0.f, 8.f,
+                  "cone start offset along the geometric normal, in voxels")
+            .real("vct.max-alpha", &ConeSettings::maxAlpha, 0.5f, 1.f,
+                  "accumulated opacity at which a cone stops and counts as closed")
+            .flag("vct.aniso", &ConeSettings::anisotropic,
+                  "sample the six directional mips (weights d^2) when the grid has them")
+            .choice("vct.ao-mapping", &ConeSettings::aoMapping,
+                    {{"linear", ConeAoMapping::Linear}, {"falloff", ConeAoMapping::Falloff}},
+                    "linear: A = 1 - sum w_c alpha_c (estimates A_R); falloff: Crassin's 1/(1 + 4t/R) weighting "
+                    "(not an estimator of A_R)")
+            .flag("vct.plane-limit", &ConeSettings::planeLimit,
+                  "limit each sample's footprint to its height above the tangent plane / 1.5 so a surface's own "
+                  "voxels never occlude it");
+    return table;
+}
+
 ConeSettings readConeSettings(const ParamMap& params) {
-    ConeSettings s;
-    std::string cones = params.getChoice("vct.cones", std::to_string(gpu::CONE_DEFAULT_COUNT), {"6", "16"},
-                                         "diffuse cone set: 6 (6 x 60 deg, Villegas) or 16 (16 x 50 deg, "
-                                         "cosine-stratified spiral)");
-    s.coneCount = std::stoi(cones);
-    s.apertureDeg = params.getFloat("vct.aperture", defaultConeAperture(s.coneCount), 1.f, 179.f,
-                                    "full cone aperture in degrees, open range (1, 179); default 60 for "
-                                    "6 cones, 50 for 16");
-    if (!(s.apertureDeg > 1.f && s.apertureDeg < 179.f))
-        throw std::invalid_argument("--param vct.aperture=" + std::to_string(s.apertureDeg) +
-                                    ": out of range (1, 179)");
-    s.stepFactor = params.getFloat("vct.step", gpu::CONE_DEFAULT_STEP, 0.05f, 2.f,
-                                   "step factor beta: step = beta * cone diameter");
-    s.offsetVoxels = params.getFloat("vct.offset", gpu::CONE_DEFAULT_OFFSET, 0.f, 8.f,
-                                     "cone start offset along the geometric normal, in voxels");
-    s.maxAlpha = params.getFloat("vct.max-alpha", gpu::CONE_DEFAULT_MAX_ALPHA, 0.5f, 1.f,
-                                 "accumulated opacity at which a cone stops and counts as closed");
-    s.anisotropic = params.getBool("vct.aniso", true,
-                                   "sample the six directional mips (weights d^2) when the grid has them");
-    s.aoMapping = params.getChoice("vct.ao-mapping", "linear", {"linear", "falloff"},
-                                   "linear: A = 1 - sum w_c alpha_c (estimates A_R); falloff: Crassin's "
-                                   "1/(1 + 4t/R) weighting (not an estimator of A_R)") == "falloff"
-                      ? ConeAoMapping::Falloff
-                      : ConeAoMapping::Linear;
-    s.planeLimit = params.getBool("vct.plane-limit", true,
-                                  "limit each sample's footprint to its height above the tangent plane "
-                                  "/ 1.5 so a surface's own voxels never occlude it");
+    ConeSettings s = coneSettings().read(params);
     s.validate();
     return s;
 }

@@ -1,16 +1,8 @@
 // Settings of voxel cone tracing (BRIEF section 3), read from `--param vct.*`. Defaults and
 // their reasons live in shaders/cone/cone_shared.h (CONE_DEFAULT_*).
 //
-// | key             | default       | range          | meaning                                         |
-// |-----------------|---------------|----------------|-------------------------------------------------|
-// | vct.cones       | 6             | 6 or 16        | diffuse cone set (6 x 60 deg Villegas; 16 x 50) |
-// | vct.aperture    | 60 (6) 50 (16)| (1, 179) deg   | full apex angle of every cone                   |
-// | vct.step        | 0.5           | [0.05, 2]      | step = beta * footprint diameter                |
-// | vct.offset      | 1.5           | [0, 8] voxels  | start offset along the geometric normal         |
-// | vct.max-alpha   | 0.99          | [0.5, 1]       | a cone stops (and counts as closed) past this   |
-// | vct.aniso       | 1             | 0 or 1         | six directional mips (d^2 weights) if the grid has them |
-// | vct.ao-mapping  | linear        | linear|falloff | how cone opacity becomes AO (see below)         |
-// | vct.plane-limit | 1             | 0 or 1         | footprint <= height above the tangent plane / 1.5 |
+// Keys, defaults, ranges and docs: coneSettings() (vct.cones, vct.aperture, vct.step,
+// vct.offset, vct.max-alpha, vct.aniso, vct.ao-mapping, vct.plane-limit).
 //
 // AO mappings: `linear` A = 1 - sum_c w_c alpha_c, where alpha_c is cone c's opacity
 // accumulated within R; with cosine-lobe weights w_c this estimates A_R of BRIEF section 1
@@ -19,7 +11,9 @@
 // 2011's smooth AO); it is brighter than A_R by design and not an estimator of it.
 #pragma once
 
-#include "render/params.h"
+#include "cone/cone_shared.h"
+
+#include "core/settings.h"
 
 #include <string>
 
@@ -28,11 +22,11 @@ namespace vct {
 enum class ConeAoMapping { Linear, Falloff };
 
 struct ConeSettings {
-    int coneCount = 6;              // 6 or 16
-    float apertureDeg = 60.f;       // full apex angle, degrees, (1, 179)
-    float stepFactor = 0.5f;        // beta: step / footprint diameter, [0.05, 2]
-    float offsetVoxels = 1.5f;      // start offset along the geometric normal, voxels, [0, 8]
-    float maxAlpha = 0.99f;         // early exit, [0.5, 1]
+    int coneCount = gpu::CONE_DEFAULT_COUNT;
+    float apertureDeg = gpu::CONE_DEFAULT_APERTURE_6;  // full apex angle, degrees
+    float stepFactor = gpu::CONE_DEFAULT_STEP;         // beta: step / footprint diameter
+    float offsetVoxels = gpu::CONE_DEFAULT_OFFSET;     // start offset along the geometric normal, voxels
+    float maxAlpha = gpu::CONE_DEFAULT_MAX_ALPHA;      // early exit
     bool anisotropic = true;        // use grid.anisoRadiance when present
     ConeAoMapping aoMapping = ConeAoMapping::Linear;
     bool planeLimit = true;         // limit the footprint by the height above the tangent plane
@@ -44,8 +38,8 @@ struct ConeSettings {
 // The set's own aperture: 60 degrees for 6 cones, 50 for 16.
 float defaultConeAperture(int coneCount);
 
-// Reads the vct.* keys above (each documented for --help-params).
-ConeSettings readConeSettings(const ParamMap& params);
+const SettingsTable<ConeSettings>& coneSettings();
+ConeSettings readConeSettings(const ParamMap& params);  // coneSettings().read(params)
 
 std::string toString(ConeAoMapping m);
 

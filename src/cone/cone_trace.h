@@ -5,9 +5,9 @@
 
 #include "cone/cone_settings.h"
 #include "gl/handles.h"
-#include "render/gbuffer.h"
-#include "render/timing.h"
-#include "render/view.h"
+#include "core/gbuffer.h"
+#include "core/timing.h"
+#include "core/view.h"
 #include "voxelize/voxel_grid.h"
 
 #include <string>

@@ -5,6 +5,7 @@
 #include "eval/metrics.h"
 #include "eval/roi.h"
 #include "gl/context.h"
+#include "methods/registry.h"
 #include "render/renderer.h"
 
 #include <algorithm>
@@ -56,10 +57,9 @@ std::vector<MethodVariant> parseMethodList(const std::string& text, const std::s
                 v.params[kv.substr(0, eq)] = kv.substr(eq + 1);
             }
         }
-        const auto& known = kind == "gi" ? giMethods() : aoMethods();
-        if (std::find(known.begin(), known.end(), v.method) == known.end() || v.method == "none" ||
-            v.method == "reference")
-            throw std::invalid_argument("method '" + v.method + "' is not a " + kind + " method to compare");
+        const Method* known = findMethod(kind == "gi" ? MethodKind::GI : MethodKind::AO, v.method);
+        if (!known || known->groundTruth)
+            throw UsageError("method '" + v.method + "' is not a " + kind + " method to compare");
         out.push_back(v);
         item.clear();
     };
@@ -165,8 +165,8 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
 
     // The reference at the G-buffer's points, and the valid (non-sky) mask.
     RenderRequest ref = s.base;
-    ref.ao = anyAo ? "reference" : "none";
-    ref.gi = "none";
+    ref.ao = anyAo ? groundTruthMethod(MethodKind::AO).name : kNoMethod;
+    ref.gi = kNoMethod;
     ref.spp = s.referenceSpp;
     ref.aovs = {"depth"};
     if (anyAo) ref.aovs.insert(ref.aovs.end(), {"ao", "ao_stderr"});
@@ -208,8 +208,8 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
     }
     if (anyGi) {
         RenderRequest g = s.base;
-        g.ao = "none";
-        g.gi = "reference";
+        g.ao = kNoMethod;
+        g.gi = groundTruthMethod(MethodKind::GI).name;
         g.spp = s.referenceSpp;
         g.aovs = {"indirect", "indirect_stderr"};
         say("reference GI: " + std::to_string(s.referenceSpp) + " spp");
@@ -234,8 +234,8 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
         say(v.kind + " " + v.label());
         RenderRequest req = s.base;
         for (const auto& [k, val] : v.params) req.params.set(k, val);
-        if (v.kind == "ao") { req.ao = v.method; req.gi = "none"; req.aovs = {"ao"}; }
-        else { req.ao = "none"; req.gi = v.method; req.aovs = {"indirect"}; }
+        if (v.kind == "ao") { req.ao = v.method; req.gi = kNoMethod; req.aovs = {"ao"}; }
+        else { req.ao = kNoMethod; req.gi = v.method; req.aovs = {"indirect"}; }
         RenderResult first = session.render(req);  // warm-up; its image is the one scored
         std::vector<double> totals;
         std::map<std::string, std::vector<double>> passTimes;

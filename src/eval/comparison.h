@@ -4,7 +4,7 @@
 // (BRIEF sections 4 and 5). Used by `vct compare` and, case by case, by `vct sweep`.
 #pragma once
 
-#include "render/request.h"
+#include "core/request.h"
 #include "scene/scene.h"
 
 #include <nlohmann/json.hpp>

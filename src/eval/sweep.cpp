@@ -1,8 +1,9 @@
 #include "eval/sweep.h"
 
-#include "render/method_params.h"
-#include "render/params.h"
-#include "render/request.h"
+#include "methods/registry.h"
+#include "render/renderer.h"
+#include "core/params.h"
+#include "core/request.h"
 #include "scene/camera.h"
 #include "scene/gltf_loader.h"
 
@@ -71,9 +72,9 @@ std::string paramValue(const json& j, const std::string& where) {
 }
 
 void checkParamKey(const std::string& key, const std::string& where) {
-    documentAllMethodParams();
-    const auto& docs = ParamMap::documented();
-    if (!docs.count(key)) fail(where, "unknown parameter '" + key + "' (see vct render --help-params)");
+    const std::vector<SettingDoc> docs = allSettingDocs();
+    if (std::none_of(docs.begin(), docs.end(), [&](const SettingDoc& d) { return d.key == key; }))
+        fail(where, "unknown parameter '" + key + "' (see vct render --help-params)");
 }
 
 std::map<std::string, std::string> paramsField(const json& j, const std::string& where) {
@@ -158,11 +159,11 @@ std::vector<MethodVariant> parseMethods(const json& j, const std::string& where)
         }
         if (!m.contains("method") || !m["method"].is_string()) fail(join(w, "method"), "expected a method name");
         const std::string method = m["method"].get<std::string>();
-        const auto& known = kind == "gi" ? giMethods() : aoMethods();
-        if (std::find(known.begin(), known.end(), method) == known.end() || method == "none" || method == "reference") {
+        const MethodKind methodKind = kind == "gi" ? MethodKind::GI : MethodKind::AO;
+        const Method* known = findMethod(methodKind, method);
+        if (!known || known->groundTruth) {
             std::string all;
-            for (const auto& k : known)
-                if (k != "none" && k != "reference") all += (all.empty() ? "" : ", ") + k;
+            for (const Method* k : scoredMethods(methodKind)) all += (all.empty() ? "" : ", ") + k->name;
             fail(join(w, "method"), "'" + method + "' is not a " + kind + " method to compare (known: " + all + ")");
         }
         std::map<std::string, std::string> fixed;

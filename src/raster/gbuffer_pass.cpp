@@ -8,15 +8,6 @@
 
 namespace vct {
 
-void bindGBufferTextures(const GBuffer& g) {
-    glBindTextureUnit(kUnitPosition, g.position.id());
-    glBindTextureUnit(kUnitNormal, g.normal.id());
-    glBindTextureUnit(kUnitGeomNormal, g.geomNormal.id());
-    glBindTextureUnit(kUnitAlbedo, g.albedo.id());
-    glBindTextureUnit(kUnitEmission, g.emission.id());
-    glBindTextureUnit(kUnitDepth, g.depth.id());
-}
-
 GBuffer renderGBuffer(const GpuScene& scene, const View& view, PassTimer& timer) {
     auto scope = timer.scope("gbuffer");
     // One program per shader variant: features the scene does not use are compiled out.

@@ -1,9 +1,9 @@
 // The G-buffer pass: rasterizes the scene once per view into the attachments of GBuffer.
 #pragma once
 
-#include "render/gbuffer.h"
-#include "render/gpu_scene.h"
-#include "render/timing.h"
+#include "core/gbuffer.h"
+#include "core/gpu_scene.h"
+#include "core/timing.h"
 
 namespace vct {
 

@@ -2,9 +2,9 @@
 #pragma once
 
 #include "raster/shadow_pass.h"
-#include "render/gbuffer.h"
-#include "render/gpu_scene.h"
-#include "render/timing.h"
+#include "core/gbuffer.h"
+#include "core/gpu_scene.h"
+#include "core/timing.h"
 
 namespace vct {
 

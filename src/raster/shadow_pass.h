@@ -4,8 +4,8 @@
 #pragma once
 
 #include "gl/handles.h"
-#include "render/gpu_scene.h"
-#include "render/timing.h"
+#include "core/gpu_scene.h"
+#include "core/timing.h"
 #include "scene/scene.h"
 
 namespace vct {

@@ -2,7 +2,7 @@
 // row, has its centre at NDC ((x + 0.5) / W * 2 - 1, 1 - (y + 0.5) / H * 2).
 #pragma once
 
-#include "render/view.h"
+#include "core/view.h"
 
 #include <glm/glm.hpp>
 

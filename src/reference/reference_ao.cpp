@@ -4,7 +4,7 @@
 #include "reference/progress.h"
 #include "reference/sampler.h"
 #include "reference/sampling_math.h"
-#include "render/params.h"
+#include "core/params.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -30,30 +30,35 @@ void ReferenceSettings::validate() const {
     if (!(sky >= 0.f) || !std::isfinite(sky)) fail("sky must be finite and >= 0");
 }
 
-bool referencePixelAreaFromParams(const ParamMap& params) {
-    return params.getChoice("reference.pixel", "center", {"center", "area"},
-                            "reference: AO at the G-buffer's pixel centres, or averaged over the pixel with "
-                            "jittered primary rays (box filter, as Cycles)") == "area";
+const SettingsTable<ReferenceSettings>& referenceSettings() {
+    static const std::vector<std::pair<std::string, RayMode>> modes = {
+        {"single", RayMode::Single}, {"stream", RayMode::Stream}, {"packet8", RayMode::Packet8},
+        {"packet16", RayMode::Packet16}};
+    static const auto table =
+        SettingsTable<ReferenceSettings>()
+            .integer("reference.spp", &ReferenceSettings::spp, [](const ReferenceSettings& s) { return s.spp; }, "--spp",
+                     1, 1 << 20, "reference samples per pixel (budget)")
+            .custom({"reference.seed", "--seed", "[0, 2147483647]", "reference sample scramble seed"},
+                    [](ReferenceSettings& s, const ParamMap& p) {
+                        s.seed = uint64_t(p.getInt("reference.seed", int(s.seed), 0, std::numeric_limits<int>::max()));
+                    })
+            .real("reference.target-stderr", &ReferenceSettings::targetStderr, 0.f, 1e30f,
+                  "stop once the image-mean standard error is below this (0 = off)")
+            .integer("reference.min-spp", &ReferenceSettings::minSpp, 1, 1 << 20, "no early stop before this many spp")
+            .integer("reference.replicates", &ReferenceSettings::replicates, 1, kMaxReplicates,
+                     "independent sample scrambles behind the error bar (1 = one stream)")
+            .integer("reference.bounces", &ReferenceSettings::bounces, 1, 1024, "GI: max diffuse reflections per path")
+            .integer("reference.roulette-bounce", &ReferenceSettings::rouletteBounce, 1, 1 << 20,
+                     "GI: Russian roulette from this bounce on")
+            .choice("reference.ray-mode", &ReferenceSettings::rayMode, modes, "how occlusion rays are handed to Embree")
+            .choice("reference.pixel", &ReferenceSettings::pixelArea, {{"center", false}, {"area", true}},
+                    "reference: AO at the G-buffer's pixel centres, or averaged over the pixel with jittered "
+                    "primary rays (box filter, as Cycles)");
+    return table;
 }
 
-ReferenceSettings referenceSettingsFromParams(const ParamMap& params, ReferenceSettings s) {
-    s.spp = params.getInt("reference.spp", s.spp, 1, 1 << 20, "reference samples per pixel (budget)");
-    s.seed = uint64_t(params.getInt("reference.seed", int(s.seed), 0, std::numeric_limits<int>::max(),
-                                    "reference sample scramble seed"));
-    s.targetStderr = params.getFloat("reference.target-stderr", s.targetStderr, 0.f, 1e30f,
-                                     "stop once the image-mean standard error is below this (0 = off)");
-    s.minSpp = params.getInt("reference.min-spp", s.minSpp, 1, 1 << 20, "no early stop before this many spp");
-    s.replicates = params.getInt("reference.replicates", s.replicates, 1, kMaxReplicates,
-                                 "independent sample scrambles behind the error bar (1 = one stream)");
-    s.bounces = params.getInt("reference.bounces", s.bounces, 1, 1024, "GI: max diffuse reflections per path");
-    s.rouletteBounce = params.getInt("reference.roulette-bounce", s.rouletteBounce, 1, 1 << 20,
-                                     "GI: Russian roulette from this bounce on");
-    static const std::vector<std::string> modes = {"single", "stream", "packet8", "packet16"};
-    std::string mode = params.getChoice("reference.ray-mode", modes[size_t(s.rayMode)], modes,
-                                        "how occlusion rays are handed to Embree");
-    for (size_t i = 0; i < modes.size(); ++i)
-        if (mode == modes[i]) s.rayMode = RayMode(i);
-    return s;
+ReferenceSettings referenceSettingsFromParams(const ParamMap& params, ReferenceSettings base) {
+    return referenceSettings().read(params, base);
 }
 
 namespace {

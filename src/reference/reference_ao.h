@@ -21,7 +21,8 @@
 
 #include "image/image.h"
 #include "reference/embree_scene.h"
-#include "render/view.h"
+#include "core/settings.h"
+#include "core/view.h"
 #include "scene/scene.h"
 
 #include <glm/glm.hpp>
@@ -31,7 +32,6 @@
 
 namespace vct {
 
-class ParamMap;
 
 struct SurfacePoint {
     glm::vec3 position{0.f};     // world space
@@ -53,17 +53,18 @@ struct ReferenceSettings {
     int rouletteBounce = 3;    // GI: Russian roulette (unbiased) from this bounce on, [1, inf)
     float sky = 1.f;           // GI: uniform sky radiance, [0, inf)
     RayMode rayMode = RayMode::Stream;  // how occlusion rays reach Embree (bench_reference)
+    // Render modes: false = evaluate at the G-buffer's pixel centres, true = average over the
+    // pixel with jittered primary rays (box filter, as Cycles).
+    bool pixelArea = false;
 
     void validate() const;  // throws std::invalid_argument naming the bad field
 };
 
-// Reads "reference.spp", "reference.seed", "reference.target-stderr", "reference.min-spp", "reference.replicates",
-// "reference.bounces", "reference.roulette-bounce", "reference.ray-mode" on top of `base`.
-// The AO radius and the sky radiance are shared by every method: the caller sets them.
+// The reference.* keys (spp, seed, target-stderr, min-spp, replicates, bounces,
+// roulette-bounce, ray-mode, pixel). The AO radius and the sky radiance are shared by every
+// method: the caller sets them; spp and seed default to the request's.
+const SettingsTable<ReferenceSettings>& referenceSettings();
 ReferenceSettings referenceSettingsFromParams(const ParamMap& params, ReferenceSettings base = {});
-// "reference.pixel": false = evaluate at the G-buffer's pixel centres (default), true =
-// average over the pixel with jittered primary rays (box filter, as Cycles).
-bool referencePixelAreaFromParams(const ParamMap& params);
 
 struct ReferenceAO {
     int width = 0, height = 0;           // image modes: pixel (x, y) is element y * width + x, top row first

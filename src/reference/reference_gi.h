@@ -29,7 +29,7 @@
 #include "image/image.h"
 #include "reference/embree_scene.h"
 #include "reference/reference_ao.h"
-#include "render/view.h"
+#include "core/view.h"
 #include "scene/scene.h"
 
 #include <cstdint>

@@ -1,56 +1,40 @@
-// Pass planning: a render runs only the passes its scene and its requested outputs need
-// (BRIEF section 7). Each pass declares the resources it reads and writes; the requested
-// AOVs select resources; the passes that write a needed resource run, pulling in what
-// they read; every other pass is left out with the reason. Pure logic, no GL: tested on
+// Pass planning: a render runs only the passes its scene and its requested outputs need.
+// The renderer's own passes (G-buffer, shadows, direct light, composite) and the passes its
+// methods declare (core/method.h) each name the resources they read and write; the
+// requested AOVs select resources; the passes that write a needed resource run, pulling in
+// what they read; every other pass is left out with the reason. Pure logic, no GL: tested on
 // the CPU and printed by `vct render --explain`.
 #pragma once
 
-#include "render/request.h"
-#include "scene/scene.h"
+#include "core/method.h"
+#include "core/pass.h"
+#include "core/request.h"
+#include "core/scene_features.h"
 
 #include <string>
 #include <vector>
 
 namespace vct {
 
-// What the scene contains that changes which passes and shader features are needed.
-struct SceneFeatures {
-    size_t triangles = 0;
-    size_t materials = 0;
-    size_t lights = 0;
-    bool hasEmission = false;
-    bool hasTextures = false;
-    bool hasAlphaMask = false;
-    bool hasOffscreenOccluders = false;
+// The methods a request names (null for none); a UsageError for a name the registry lacks.
+struct ActiveMethods {
+    const Method* ao = nullptr;
+    const Method* gi = nullptr;
+    // AO first: the order their passes are declared and run.
+    std::vector<const Method*> list() const;
 };
-SceneFeatures analyzeScene(const Scene& scene);
+ActiveMethods activeMethods(const RenderRequest& request);
 
-struct PassDecl {
-    std::string name;
-    std::vector<std::string> reads;
-    std::vector<std::string> writes;
-    std::string why;  // why it exists in this request (filled when declared)
-};
-
-struct SkippedPass {
-    std::string name;
-    std::string reason;
-};
-
-struct RenderPlan {
-    std::vector<PassDecl> run;        // in execution order, each with the reason it runs
-    std::vector<SkippedPass> skipped; // every known pass that does not run, with the reason
-    std::vector<std::string> notes;   // shader variants and other choices made from the scene
-    bool runs(const std::string& pass) const;
-    std::vector<std::string> runNames() const;
-};
-
-// Throws std::invalid_argument for requests that cannot be satisfied (e.g. --aov ao with
-// --ao none), naming the option.
+// Throws UsageError for requests that cannot be satisfied (e.g. --aov ao with --ao none),
+// naming the option.
 RenderPlan planRender(const SceneFeatures& scene, const RenderRequest& request);
 std::string describePlan(const RenderPlan& plan);
 
-// Every pass name the renderer knows, in execution order.
-const std::vector<std::string>& allPassNames();
+// Every pass the renderer knows: its own and every registered method's, in a fixed order.
+std::vector<PassId> allPassIds();
+
+// Every AOV a render can write: the renderer's and the registered methods'.
+std::vector<AovInfo> knownAovs();
+const AovInfo* findAov(const std::string& name);
 
 }  // namespace vct

@@ -1,28 +1,55 @@
 #include "render/renderer.h"
 
-#include "ao/screen_space_ao.h"
+#include "core/errors.h"
+#include "core/method.h"
 #include "gl/context.h"
 #include "gl/readback.h"
+#include "methods/registry.h"
 #include "raster/gbuffer_pass.h"
 #include "raster/lighting_pass.h"
 #include "raster/shadow_pass.h"
-#include "render/gpu_scene.h"
-#include "render/method_passes.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cmath>
+#include <set>
 #include <sstream>
-#include <stdexcept>
 #include <thread>
 
 namespace vct {
+
+namespace {
+
+struct RendererSettings {
+    int shadowSize = 1024;  // shadow map texels per side
+};
+
+const SettingsTable<RendererSettings>& rendererSettings() {
+    static const auto table = SettingsTable<RendererSettings>().integer(
+        "shadow.size", &RendererSettings::shadowSize, 16, 8192, "shadow map texels per side");
+    return table;
+}
+
+}  // namespace
+
+std::vector<SettingDoc> rendererSettingDocs() { return rendererSettings().docs(); }
+
+std::vector<SettingDoc> allSettingDocs() {
+    std::vector<SettingDoc> all = rendererSettingDocs();
+    std::set<std::string> seen;
+    for (const SettingDoc& d : all) seen.insert(d.key);
+    for (const Method* m : registeredMethods())
+        if (m->settings)
+            for (const SettingDoc& d : m->settings())
+                if (seen.insert(d.key).second) all.push_back(d);
+    return all;
+}
 
 struct RenderSession::Impl {
     GpuScene gpu;
     std::map<std::string, std::shared_ptr<GBuffer>> gbuffers;  // keyed by camera + size
     std::unique_ptr<ShadowMaps> shadows;
-    MethodCache methods;  // voxel grids and other per-method shared state
+    StateStore methods;  // the methods' state across renders (voxel grids, the BVH)
 };
 
 namespace {
@@ -42,6 +69,27 @@ Image channelsOf(const Image& src, int first, int count) {
     return out;
 }
 
+// A method's resource as a texture for the composite: CPU images (the reference, the sparse
+// backend) are uploaded.
+const GlTexture* asTexture(FrameOutputs& outputs, ResourceId id, GLenum format, int width, int height) {
+    FrameResource* r = outputs.find(id);
+    if (!r) return nullptr;
+    if (!r->texture && !r->image.empty()) {
+        r->texture = createTexture2D(format, width, height);
+        uploadTexture2D(r->texture.id(), r->image);
+    }
+    return r->texture ? &r->texture : nullptr;
+}
+
+// The first `channels` of a method's resource (texture read back, or the CPU image).
+Image resourceImage(const FrameOutputs& outputs, ResourceId id, int channels, int width, int height) {
+    const FrameResource* r = outputs.find(id);
+    if (!r) throw InternalError("readback", "no method wrote '" + std::string(id.name) + "'");
+    if (!r->image.empty()) return r->image.channels == channels ? r->image : channelsOf(r->image, 0, channels);
+    Image img = readTexture2D(r->texture.id(), width, height, r->textureChannels);
+    return r->textureChannels == channels ? img : channelsOf(img, 0, channels);
+}
+
 }  // namespace
 
 RenderSession::RenderSession(const Scene& scene)
@@ -55,26 +103,25 @@ RenderSession::~RenderSession() = default;
 
 RenderResult RenderSession::render(const RenderRequest& request) {
     if (request.width < 1 || request.height < 1 || request.width > 16384 || request.height > 16384)
-        throw std::invalid_argument("--size " + std::to_string(request.width) + "x" + std::to_string(request.height) +
-                                    ": each side must be in [1, 16384]");
-    if (!std::isfinite(request.radius) || request.radius <= 0.f)
-        throw std::invalid_argument("--radius must be finite and > 0");
-    if (!std::isfinite(request.sky) || request.sky < 0.f)
-        throw std::invalid_argument("--sky must be finite and >= 0");
+        throw UsageError("--size " + std::to_string(request.width) + "x" + std::to_string(request.height) +
+                         ": each side must be in [1, 16384]");
+    if (!std::isfinite(request.radius) || request.radius <= 0.f) throw UsageError("--radius must be finite and > 0");
+    if (!std::isfinite(request.sky) || request.sky < 0.f) throw UsageError("--sky must be finite and >= 0");
     if (request.backend != "gl" && request.backend != "vdb")
-        throw std::invalid_argument("--backend " + request.backend + ": expected gl or vdb");
+        throw UsageError("--backend " + request.backend + ": expected gl or vdb");
 
     GlContext& gl = GlContext::shared();
     RenderResult result;
     result.plan = planRender(mFeatures, request);
     const RenderPlan& plan = result.plan;
+    const ActiveMethods active = activeMethods(request);
     PassTimer timer(gl.info().gpuTimerQueries);
     const double start = nowMs();
     const View view = makeView(request.camera, request.width, request.height);
 
     // G-buffer: shared across renders of the same view.
     std::shared_ptr<GBuffer> gbuffer;
-    if (plan.runs("gbuffer")) {
+    if (plan.runs(kPassGBuffer)) {
         auto& slot = mImpl->gbuffers[viewKey(view)];
         if (!slot) {
             slot = std::make_shared<GBuffer>(renderGBuffer(mImpl->gpu, view, timer));
@@ -84,67 +131,64 @@ RenderResult RenderSession::render(const RenderRequest& request) {
         gbuffer = slot;
     }
     GlTexture direct;
-    if (plan.runs("shadow")) {
+    if (plan.runs(kPassShadow)) {
         if (!mImpl->shadows) {
-            const int size = request.params.getInt("shadow.size", 1024, 16, 8192, "shadow map texels per side");
+            const int size = rendererSettings().read(request.params).shadowSize;
             mImpl->shadows = std::make_unique<ShadowMaps>(renderShadowMaps(mImpl->gpu, mScene, size, timer));
             gl.checkErrors("shadow");
             mRunCounts["shadow"]++;
         }
     }
-    if (plan.runs("direct")) {
+    if (plan.runs(kPassDirect)) {
         direct = computeDirectLighting(*gbuffer, mImpl->gpu, *mImpl->shadows, timer);
         gl.checkErrors("direct");
     }
 
-    // AO and GI estimators.
-    MethodOutputs m = runMethodPasses(plan, request, mScene, mImpl->gpu, gbuffer.get(), view, timer,
-                                      mImpl->methods, mRunCounts, result.extra);
-
-    // CPU methods (the reference, the sparse backend) hand images: the composite reads textures.
-    if (plan.runs("composite")) {
-        if (!m.ao && !m.aoImage.empty()) {
-            m.ao = createTexture2D(GL_R32F, request.width, request.height);
-            uploadTexture2D(m.ao.id(), m.aoImage);
-        }
-        if (!m.indirect && !m.indirectImage.empty()) {
-            m.indirect = createTexture2D(GL_RGBA32F, request.width, request.height);
-            uploadTexture2D(m.indirect.id(), m.indirectImage);
-        }
+    // The AO and GI estimators.
+    StateStore frame;
+    FrameOutputs outputs;
+    for (const Method* m : active.list()) {
+        MethodContext ctx{plan,     request, mScene,  mFeatures, mImpl->gpu, gbuffer.get(), view,
+                          timer,    mImpl->methods, frame, outputs, mRunCounts, result.extra};
+        m->execute(ctx);
     }
+
+    const int w = request.width, h = request.height;
     CompositeOutputs comp;
-    if (plan.runs("composite")) {
+    if (plan.runs(kPassComposite)) {
         CompositeInputs in;
         in.direct = direct ? &direct : nullptr;
-        in.ao = m.ao ? &m.ao : nullptr;
-        in.indirect = m.indirect ? &m.indirect : nullptr;
+        in.ao = asTexture(outputs, kAo, GL_R32F, w, h);
+        in.indirect = asTexture(outputs, kGiIndirect, GL_RGBA32F, w, h);
         in.sky = request.sky;
         comp = composite(*gbuffer, in, timer);
         gl.checkErrors("composite");
     }
 
     // Read back the requested AOVs.
-    const int w = request.width, h = request.height;
+    const bool lit = active.gi && active.gi->lightsTheImage;
     for (const auto& aov : request.aovs) {
         Image img;
-        if (aov == "beauty") img = m.ptBeauty.empty() ? channelsOf(readTexture2D(comp.beauty.id(), w, h, 4), 0, 3) : m.ptBeauty;
-        else if (aov == "ao") img = !m.aoImage.empty() ? m.aoImage : readTexture2D(m.ao.id(), w, h, 1);
-        else if (aov == "ao_stderr") img = m.aoStderr;
-        else if (aov == "indirect_stderr") img = m.indirectStderr;
+        if (aov == "beauty") img = lit ? resourceImage(outputs, kBeauty, 3, w, h) : channelsOf(readTexture2D(comp.beauty.id(), w, h, 4), 0, 3);
+        else if (aov == "ao") img = resourceImage(outputs, kAo, 1, w, h);
         else if (aov == "direct") {
-            if (!m.ptDirect.empty()) img = m.ptDirect;
+            if (lit) img = resourceImage(outputs, kDirect, 3, w, h);
             else if (direct) img = channelsOf(readTexture2D(direct.id(), w, h, 4), 0, 3);
             else img = Image(w, h, 3, 0.f);
         } else if (aov == "indirect") {
-            if (!m.indirectImage.empty()) img = m.indirectImage;
-            else img = channelsOf(readTexture2D((m.indirect ? m.indirect : comp.indirect).id(), w, h, 4), 0, 3);
+            img = active.gi ? resourceImage(outputs, kGiIndirect, 3, w, h)
+                            : channelsOf(readTexture2D(comp.indirect.id(), w, h, 4), 0, 3);
         } else if (aov == "normal") img = channelsOf(readTexture2D(gbuffer->normal.id(), w, h, 4), 0, 3);
         else if (aov == "position") img = channelsOf(readTexture2D(gbuffer->position.id(), w, h, 4), 0, 3);
         else if (aov == "depth") img = channelsOf(readTexture2D(gbuffer->position.id(), w, h, 4), 3, 1);
         else if (aov == "albedo") img = channelsOf(readTexture2D(gbuffer->albedo.id(), w, h, 4), 0, 3);
         else if (aov == "emission") img = channelsOf(readTexture2D(gbuffer->emission.id(), w, h, 4), 0, 3);
-        else if (aov.rfind("voxel_", 0) == 0) img = m.voxelViews.at(aov);
-        else throw std::invalid_argument("unknown AOV '" + aov + "'");
+        else {
+            // A method's own AOV, written under its name.
+            const AovInfo* info = findAov(aov);
+            if (!info) throw UsageError("unknown AOV '" + aov + "'");
+            img = resourceImage(outputs, ResourceId{aov}, info->channels, w, h);
+        }
         result.aovs[aov] = std::move(img);
     }
     gl.checkErrors("readback");
@@ -177,7 +221,7 @@ nlohmann::json statsJson(const RenderResult& result, const RenderRequest& reques
     j["seed"] = request.seed;
     j["passes_run"] = result.plan.runNames();
     j["passes_skipped"] = nlohmann::json::array();
-    for (const auto& s : result.plan.skipped) j["passes_skipped"].push_back({{"pass", s.name}, {"reason", s.reason}});
+    for (const auto& s : result.plan.skipped) j["passes_skipped"].push_back({{"pass", std::string(s.id.name)}, {"reason", s.reason}});
     j["plan_notes"] = result.plan.notes;
     for (auto it = result.extra.begin(); it != result.extra.end(); ++it) j[it.key()] = it.value();
     return j;

@@ -5,10 +5,11 @@
 // command line or of files.
 #pragma once
 
+#include "core/request.h"
+#include "core/settings.h"
+#include "core/timing.h"
 #include "image/image.h"
 #include "render/plan.h"
-#include "render/request.h"
-#include "render/timing.h"
 #include "scene/scene.h"
 
 #include <nlohmann/json.hpp>
@@ -48,6 +49,11 @@ private:
     std::map<std::string, int> mRunCounts;
     std::unique_ptr<Impl> mImpl;
 };
+
+// The renderer's own --param keys (the shadow map size); the methods' are in the registry.
+std::vector<SettingDoc> rendererSettingDocs();
+// Every --param key a render can read: the renderer's and every registered method's, once.
+std::vector<SettingDoc> allSettingDocs();
 
 // JSON for --stats: passes, totals, sizes, renderer string, core count, scene counts,
 // passes_run and passes_skipped.

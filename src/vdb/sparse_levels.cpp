@@ -8,6 +8,7 @@
 // sums its children in a fixed order: the levels are deterministic.
 #include "vdb/sparse_detail.h"
 #include "cone/cone_bounce.h"
+#include "voxelize/voxel_settings.h"
 
 #include <openvdb/tools/Prune.h>
 #include <openvdb/tree/LeafManager.h>
@@ -171,13 +172,10 @@ SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject
                                    const ParamMap& params) {
     if (!std::isfinite(sky) || sky < 0.f)
         throw std::invalid_argument("buildSparseVoxels: sky radiance must be finite and >= 0");
-    const float offset = params.getFloat("vct.inject.offset", 2.f, 0.f, 16.f,
-                                         "voxels along the normal where shadow rays of injection start");
+    // The GPU path's keys, read for parity (the sparse grids always hold float32).
+    const float offset = voxelSettings().read(params).injectOffset;
     refuseVctBounces(params, inject, "--backend vdb");  // the sparse path injects direct light only
-    readVctBounceSky(params);
-    params.getChoice("vct.voxel.precision", "auto", {"auto", "half", "float"},
-                     "storage of emission/radiance: half (RGBA16F, clamps at 65504), float (RGBA32F), "
-                     "auto = float when emission or lights exceed the half range");
+    bounceSettings().read(params);
     SparseVoxelScene voxels = voxelizeSparse(scene, voxelRes);
     if (inject) injectSparseRadiance(voxels, scene, offset);
     buildSparseLevels(voxels);

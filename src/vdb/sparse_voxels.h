@@ -18,7 +18,7 @@
 // border and empty space alike).
 #pragma once
 
-#include "render/params.h"
+#include "core/params.h"
 #include "scene/scene.h"
 
 #include <glm/glm.hpp>

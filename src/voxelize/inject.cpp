@@ -47,13 +47,10 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
             !std::isfinite(l.position.x + l.position.y + l.position.z) ||
             !std::isfinite(l.direction.x + l.direction.y + l.direction.z))
             throw std::invalid_argument("injectRadiance: light '" + l.name + "' has a non-finite value");
-    const float offset = params.getFloat("vct.inject.offset", 2.f, 0.f, 16.f,
-                                         "voxels along the normal where shadow rays of injection start");
-    const std::string precision =
-        params.getChoice("vct.voxel.precision", "auto", {"auto", "half", "float"},
-                         "storage of emission/radiance: half (RGBA16F, clamps at 65504), float (RGBA32F), "
-                         "auto = float when emission or lights exceed the half range");
-    const bool useFloat = precision == "float" || (precision == "auto" && radianceNeedsFloat(grid, scene));
+    const VoxelSettings settings = voxelSettings().read(params);
+    const float offset = settings.injectOffset;
+    const bool useFloat = settings.precision == VoxelPrecision::Float ||
+                          (settings.precision == VoxelPrecision::Auto && radianceNeedsFloat(grid, scene));
     const GLenum format = useFloat ? GL_RGBA32F : GL_RGBA16F;
     constexpr int maxOuter = 7, outerUnit = 20;  // clear of the scene textures (unit 8)
     if (int(outerLevels.size()) > maxOuter)

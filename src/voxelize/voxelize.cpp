@@ -95,13 +95,11 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
                                     " needs about " + std::to_string(int(needBytes / 1e9)) + " GB, more than half of "
                                     "this machine's " + std::to_string(int(haveBytes / 1e9)) +
                                     " GB: lower --voxel-res or use vct.clipmap.levels");
-    const std::string precision =
-        params.getChoice("vct.voxel.precision", "auto", {"auto", "half", "float"},
-                         "storage of emission/radiance: half (RGBA16F, clamps at 65504), float (RGBA32F), "
-                         "auto = float when emission or lights exceed the half range");
+    const VoxelPrecision precision = voxelSettings().read(params).precision;
     const float maxEmission = maxMaterialEmission(scene);
     const bool hasEmission = maxEmission > 0.f;
-    const bool useFloat = precision == "float" || (precision == "auto" && maxEmission > HALF_SAFE_MAX);
+    const bool useFloat = precision == VoxelPrecision::Float ||
+                          (precision == VoxelPrecision::Auto && maxEmission > HALF_SAFE_MAX);
     const GLenum emissionFormat = useFloat ? GL_RGBA32F : GL_RGBA16F;
 
     // Programs first, so a first-use compile is not timed as voxelization.

@@ -7,17 +7,13 @@
 //   (grid.radiance stays empty - id 0 - and buildMips builds opacity mips only; anisotropic
 //   textures then carry rgb = 0 and the directional opacity in alpha.)
 //
-// Parameters (ParamMap keys):
-//   vct.voxel.precision  auto|half|float  storage of emission/radiance/aniso textures;
-//                        "half" is RGBA16F (contract default; values clamp at 65504),
-//                        "float" RGBA32F; "auto" picks float when the scene's emission or
-//                        lights could exceed the half range (e.g. emission 1e6). Default auto.
-//   vct.inject.offset    0..16 voxels, default 2: shadow rays start this far along the normal.
+// Keys, defaults, ranges and docs: voxelSettings() (vct.voxel.precision, vct.inject.offset).
 #pragma once
 
-#include "render/gpu_scene.h"
-#include "render/params.h"
-#include "render/timing.h"
+#include "core/gpu_scene.h"
+#include "core/params.h"
+#include "voxelize/voxel_settings.h"
+#include "core/timing.h"
 #include "voxelize/voxel_grid.h"
 
 #include <string>

@@ -2,7 +2,7 @@
 // guarantees at every voxel resolution it accepts: 2048 texels per 3D texture axis, 128 MiB
 // per shader storage buffer binding (GL_MAX_SHADER_STORAGE_BLOCK_SIZE's minimum).
 #include "cone/cone_bounce.h"
-#include "render/request.h"
+#include "core/request.h"
 #include "voxelize/voxel_grid.h"
 
 #include <gtest/gtest.h>

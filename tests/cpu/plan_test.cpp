@@ -1,6 +1,9 @@
-// Pass planning (src/render/plan.h): what runs and what is left out, for the requests the
-// pass-planning issue names. Pure logic: no GL context.
+// Pass planning (src/render/plan.h): what runs and what is left out, for a range of
+// requests. Pure logic: no GL context.
+#include "ao/screen_space.h"
+#include "reference/reference_methods.h"
 #include "render/plan.h"
+#include "vct/vct_passes.h"
 
 #include <gtest/gtest.h>
 
@@ -26,9 +29,9 @@ RenderRequest request(const std::string& ao, const std::string& gi, std::vector<
     return r;
 }
 
-std::string reasonFor(const RenderPlan& p, const std::string& pass) {
+std::string reasonFor(const RenderPlan& p, PassId pass) {
     for (const auto& s : p.skipped)
-        if (s.name == pass) return s.reason;
+        if (s.id == pass) return s.reason;
     return "";
 }
 
@@ -36,24 +39,25 @@ std::string reasonFor(const RenderPlan& p, const std::string& pass) {
 
 TEST(Plan, ScreenSpaceAoRunsNoVoxelPasses) {
     RenderPlan p = planRender(litScene(), request("gtao", "none"));
-    for (const char* pass : {"voxelize", "inject", "mips", "cone_ao", "cone_gi"}) {
-        EXPECT_FALSE(p.runs(pass)) << pass;
-        EXPECT_FALSE(reasonFor(p, pass).empty()) << pass << " has no reason";
+    for (PassId pass : {kPassVoxelize, kPassInject, kPassMips, kPassConeAo, kPassConeGi}) {
+        EXPECT_FALSE(p.runs(pass)) << pass.name;
+        EXPECT_FALSE(reasonFor(p, pass).empty()) << pass.name << " has no reason";
     }
-    for (const char* pass : {"gbuffer", "shadow", "direct", "ssao", "blur", "composite"}) EXPECT_TRUE(p.runs(pass)) << pass;
+    for (PassId pass : {kPassGBuffer, kPassShadow, kPassDirect, kPassSsao, kPassBlur, kPassComposite})
+        EXPECT_TRUE(p.runs(pass)) << pass.name;
 }
 
 TEST(Plan, VctAoRunsNoInjection) {
     RenderPlan p = planRender(litScene(), request("vct", "none", {"ao"}));
-    EXPECT_TRUE(p.runs("voxelize"));
-    EXPECT_TRUE(p.runs("mips"));
-    EXPECT_TRUE(p.runs("cone_ao"));
-    EXPECT_FALSE(p.runs("inject"));
-    EXPECT_NE(reasonFor(p, "inject").find("opacity"), std::string::npos) << reasonFor(p, "inject");
+    EXPECT_TRUE(p.runs(kPassVoxelize));
+    EXPECT_TRUE(p.runs(kPassMips));
+    EXPECT_TRUE(p.runs(kPassConeAo));
+    EXPECT_FALSE(p.runs(kPassInject));
+    EXPECT_NE(reasonFor(p, kPassInject).find("opacity"), std::string::npos) << reasonFor(p, kPassInject);
     // AO alone needs no lights: no shadow maps, no direct light, no composite.
-    EXPECT_FALSE(p.runs("shadow"));
-    EXPECT_FALSE(p.runs("direct"));
-    EXPECT_FALSE(p.runs("composite"));
+    EXPECT_FALSE(p.runs(kPassShadow));
+    EXPECT_FALSE(p.runs(kPassDirect));
+    EXPECT_FALSE(p.runs(kPassComposite));
 }
 
 TEST(Plan, SceneWithoutLightsOrEmissionRunsNoShadowOrInjection) {
@@ -63,37 +67,37 @@ TEST(Plan, SceneWithoutLightsOrEmissionRunsNoShadowOrInjection) {
     RenderRequest noSky = request("vct", "vct", {"beauty", "indirect"});
     noSky.sky = 0.f;
     RenderPlan p = planRender(dark, noSky);
-    EXPECT_FALSE(p.runs("shadow"));
-    EXPECT_FALSE(p.runs("direct"));
-    EXPECT_FALSE(p.runs("inject"));
-    EXPECT_NE(reasonFor(p, "shadow").find("no punctual lights"), std::string::npos);
-    EXPECT_TRUE(p.runs("cone_gi"));
+    EXPECT_FALSE(p.runs(kPassShadow));
+    EXPECT_FALSE(p.runs(kPassDirect));
+    EXPECT_FALSE(p.runs(kPassInject));
+    EXPECT_NE(reasonFor(p, kPassShadow).find("no punctual lights"), std::string::npos);
+    EXPECT_TRUE(p.runs(kPassConeGi));
 
     // Under a sky the voxels carry its light once it bounces (default vct.bounces = 1) ...
-    EXPECT_TRUE(planRender(dark, request("vct", "vct", {"indirect"})).runs("inject"));
+    EXPECT_TRUE(planRender(dark, request("vct", "vct", {"indirect"})).runs(kPassInject));
     // ... unless nothing bounces.
     RenderRequest noBounce = request("vct", "vct", {"indirect"});
     noBounce.params.set("vct.bounces", "0");
-    EXPECT_FALSE(planRender(dark, noBounce).runs("inject"));
+    EXPECT_FALSE(planRender(dark, noBounce).runs(kPassInject));
 
     SceneFeatures emissive = dark;
     emissive.hasEmission = true;
-    EXPECT_TRUE(planRender(emissive, request("none", "vct")).runs("inject"));
+    EXPECT_TRUE(planRender(emissive, request("none", "vct")).runs(kPassInject));
 }
 
 TEST(Plan, DepthAloneRunsOnlyTheGBuffer) {
     RenderPlan p = planRender(litScene(), request("gtao", "vct", {"depth"}));
     ASSERT_EQ(p.runNames(), std::vector<std::string>{"gbuffer"});
-    EXPECT_EQ(p.skipped.size(), allPassNames().size() - 1);
+    EXPECT_EQ(p.skipped.size(), allPassIds().size() - 1);
 }
 
 TEST(Plan, GiReplacesAmbientAoInBeauty) {
     // With GI the sky visibility is part of the indirect term: AO is not needed for beauty.
     RenderPlan p = planRender(litScene(), request("vct", "vct", {"beauty"}));
-    EXPECT_TRUE(p.runs("cone_gi"));
-    EXPECT_FALSE(p.runs("cone_ao"));
+    EXPECT_TRUE(p.runs(kPassConeGi));
+    EXPECT_FALSE(p.runs(kPassConeAo));
     RenderPlan both = planRender(litScene(), request("vct", "vct", {"beauty", "ao"}));
-    EXPECT_TRUE(both.runs("cone_ao"));
+    EXPECT_TRUE(both.runs(kPassConeAo));
     // Both cone passes share one voxelization in the plan.
     const std::vector<std::string> names = both.runNames();
     EXPECT_EQ(std::count(names.begin(), names.end(), "voxelize"), 1);
@@ -101,9 +105,9 @@ TEST(Plan, GiReplacesAmbientAoInBeauty) {
 
 TEST(Plan, PathTracedGiTakesOverDirectAndComposite) {
     RenderPlan p = planRender(litScene(), request("none", "reference", {"beauty", "direct"}));
-    EXPECT_TRUE(p.runs("reference_gi"));
-    EXPECT_FALSE(p.runs("shadow"));
-    EXPECT_FALSE(p.runs("composite"));
+    EXPECT_TRUE(p.runs(kPassReferenceGi));
+    EXPECT_FALSE(p.runs(kPassShadow));
+    EXPECT_FALSE(p.runs(kPassComposite));
 }
 
 TEST(Plan, BlurAndHalfResFollowParams) {
@@ -111,17 +115,17 @@ TEST(Plan, BlurAndHalfResFollowParams) {
     r.params.set("blur", "0");
     r.params.set("ao.half-res", "1");
     RenderPlan p = planRender(litScene(), r);
-    EXPECT_TRUE(p.runs("ssao"));
-    EXPECT_FALSE(p.runs("blur"));
-    EXPECT_TRUE(p.runs("upsample"));
+    EXPECT_TRUE(p.runs(kPassSsao));
+    EXPECT_FALSE(p.runs(kPassBlur));
+    EXPECT_TRUE(p.runs(kPassUpsample));
 }
 
 TEST(Plan, NoPruneRunsEveryDeclaredPass) {
     RenderRequest r = request("vct", "none", {"depth"});
     r.prune = false;
     RenderPlan p = planRender(litScene(), r);
-    EXPECT_TRUE(p.runs("cone_ao"));
-    EXPECT_TRUE(p.runs("shadow"));
+    EXPECT_TRUE(p.runs(kPassConeAo));
+    EXPECT_TRUE(p.runs(kPassShadow));
 }
 
 TEST(Plan, ImpossibleRequestsAreErrors) {
@@ -133,6 +137,6 @@ TEST(Plan, ImpossibleRequestsAreErrors) {
 
 TEST(Plan, ReferenceAlwaysReportsItsNoise) {
     RenderPlan p = planRender(litScene(), request("reference", "none", {"ao"}));
-    EXPECT_TRUE(p.runs("reference_ao"));
-    EXPECT_FALSE(p.runs("shadow"));  // AO alone
+    EXPECT_TRUE(p.runs(kPassReferenceAo));
+    EXPECT_FALSE(p.runs(kPassShadow));  // AO alone
 }

@@ -3,8 +3,8 @@
 // area on the floor), never produced by the code under test.
 #include "reference/reference_ao.h"
 #include "reference/scene_shapes.h"
-#include "render/params.h"
-#include "render/view.h"
+#include "core/params.h"
+#include "core/view.h"
 
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>

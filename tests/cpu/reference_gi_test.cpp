@@ -4,7 +4,7 @@
 #include "reference/reference_gi.h"
 #include "reference/scene_shapes.h"
 #include "reference/texture_sampler.h"
-#include "render/view.h"
+#include "core/view.h"
 
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>

@@ -2,10 +2,17 @@
 // a few rectangles), so every expectation is a closed form: an open plane reads 1 (0.5 for
 // Crysis' full-sphere kernel), a floor-wall corner is darker near the edge, and nothing
 // produces NaN, values outside [0, 1] or a non-1 sky.
+#include "ao/alchemy/alchemy.h"
 #include "ao/ao_filters.h"
-#include "ao/screen_space_ao.h"
+#include "ao/gtao/gtao.h"
+#include "ao/hbao/hbao.h"
+#include "ao/horizon/horizon_ao.h"
+#include "ao/screen_space.h"
+#include "ao/ssao/ssao.h"
 #include "gl/context.h"
 #include "gl/readback.h"
+#include "methods/registry.h"
+#include "render/plan.h"
 
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>
@@ -159,10 +166,30 @@ void maybeDump(const Image& ao, const std::string& name) {
     std::fclose(file);
 }
 
+// The six screen-space estimators, by name.
+const std::vector<const ScreenSpaceAo*>& estimators() {
+    static const std::vector<const ScreenSpaceAo*> all = {&ssaoCrytekEstimator(), &ssaoHemisphereEstimator(),
+                                                          &horizonEstimator(),    &alchemyEstimator(),
+                                                          &hbaoEstimator(),       &gtaoEstimator()};
+    return all;
+}
+
+const ScreenSpaceAo& estimator(const std::string& name) {
+    for (const ScreenSpaceAo* e : estimators())
+        if (e->name == name) return *e;
+    throw std::runtime_error("no screen-space estimator " + name);
+}
+
+std::vector<std::string> screenSpaceAoMethods() {
+    std::vector<std::string> names;
+    for (const ScreenSpaceAo* e : estimators()) names.push_back(e->name);
+    return names;
+}
+
 Image runAo(const Fixture& f, const std::string& method, const ParamMap& params, float radius = 0.5f,
             uint64_t seed = 7) {
     PassTimer timer;
-    GlTexture ao = computeScreenSpaceAO(method, f.gbuffer, f.view, radius, params, seed, timer);
+    GlTexture ao = computeScreenSpaceAO(estimator(method), f.gbuffer, f.view, radius, params, seed, timer);
     Image img = readTexture2D(ao.id(), f.gbuffer.width, f.gbuffer.height, 1);
     GlContext::shared().checkErrors(method);
     std::string name = method + "_" + std::to_string(f.gbuffer.width) + "x" + std::to_string(f.gbuffer.height);
@@ -200,11 +227,15 @@ Stats interiorStats(const Image& ao, int margin) {
 
 const std::vector<std::string> kOpenMethods = {"ssao-hemisphere", "ssao-horizon", "alchemy", "hbao", "gtao"};
 
-TEST(ScreenSpaceAo, MethodListAndLookup) {
-    EXPECT_EQ(screenSpaceAoMethods().size(), 6u);
-    for (const auto& m : screenSpaceAoMethods()) EXPECT_TRUE(isScreenSpaceAoMethod(m)) << m;
-    EXPECT_FALSE(isScreenSpaceAoMethod("vct"));
-    EXPECT_FALSE(isScreenSpaceAoMethod("reference"));
+TEST(ScreenSpaceAo, EveryEstimatorIsARegisteredScreenSpaceMethod) {
+    // The registry's screen-space methods (those running the ssao pass) are these six.
+    std::vector<std::string> registered;
+    for (const Method* m : registeredMethods())
+        for (const MethodPass& p : m->passes)
+            if (p.id == kPassSsao) registered.push_back(m->name);
+    EXPECT_EQ(registered, screenSpaceAoMethods());
+    EXPECT_EQ(findMethod(MethodKind::AO, "vct")->passes.front().id, PassId{"voxelize"});
+    EXPECT_EQ(findMethod(MethodKind::AO, "ssao-nope"), nullptr);
 }
 
 TEST(ScreenSpaceAo, OpenPlaneFacingCameraIsOpen) {
@@ -366,7 +397,7 @@ TEST(ScreenSpaceAo, BlursLeaveAConstantImageUnchanged) {
     GlTexture input = createTexture2D(GL_R32F, w, h);
     uploadTexture2D(input.id(), constant);
     AoPassContext ctx = makeAoPassContext(f.gbuffer, f.view, 0.5f, 1, 3);
-    AoBlurSettings settings;
+    AoFilterSettings settings;
     for (int radius : {1, 4, 16}) {
         settings.radius = radius;
         for (int box = 0; box <= 1; ++box) {
@@ -383,30 +414,38 @@ TEST(ScreenSpaceAo, BlursLeaveAConstantImageUnchanged) {
 TEST(ScreenSpaceAo, RejectsBadInput) {
     Fixture f = openPlane(32);
     PassTimer timer;
-    EXPECT_THROW(computeScreenSpaceAO("ssao-nope", f.gbuffer, f.view, 0.5f, {}, 1, timer), std::invalid_argument);
-    EXPECT_THROW(computeScreenSpaceAO("gtao", f.gbuffer, f.view, 0.f, {}, 1, timer), std::invalid_argument);
-    EXPECT_THROW(computeScreenSpaceAO("gtao", f.gbuffer, f.view, std::nanf(""), {}, 1, timer), std::invalid_argument);
-    EXPECT_THROW(computeScreenSpaceAO("gtao", f.gbuffer, f.view, 0.5f, paramsOf({"blur.mode=box"}), 1, timer),
-                 std::invalid_argument);
-    EXPECT_THROW(computeScreenSpaceAO("gtao", f.gbuffer, f.view, 0.5f, paramsOf({"gtao.preset=extreme"}), 1, timer),
-                 std::invalid_argument);
-    EXPECT_THROW(computeScreenSpaceAO("hbao", f.gbuffer, f.view, 0.5f, paramsOf({"hbao.directions=0"}), 1, timer),
-                 std::invalid_argument);
+    const ScreenSpaceAo& gtao = estimator("gtao");
+    EXPECT_THROW(requireMethod(MethodKind::AO, "ssao-nope", "--ao"), UsageError);
+    // What the user wrote: a UsageError naming the key.
+    EXPECT_THROW(computeScreenSpaceAO(gtao, f.gbuffer, f.view, 0.5f, paramsOf({"blur.mode=box"}), 1, timer), UsageError);
+    EXPECT_THROW(computeScreenSpaceAO(gtao, f.gbuffer, f.view, 0.5f, paramsOf({"gtao.preset=extreme"}), 1, timer),
+                 UsageError);
+    EXPECT_THROW(computeScreenSpaceAO(estimator("hbao"), f.gbuffer, f.view, 0.5f, paramsOf({"hbao.directions=0"}), 1,
+                                      timer),
+                 UsageError);
+    // A caller's broken contract (the renderer checks the radius and sizes first).
+    EXPECT_THROW(computeScreenSpaceAO(gtao, f.gbuffer, f.view, 0.f, {}, 1, timer), InternalError);
+    EXPECT_THROW(computeScreenSpaceAO(gtao, f.gbuffer, f.view, std::nanf(""), {}, 1, timer), InternalError);
     View wrong = makeView(f.scene.camera, 16, 16);
-    EXPECT_THROW(computeScreenSpaceAO("gtao", f.gbuffer, wrong, 0.5f, {}, 1, timer), std::invalid_argument);
+    EXPECT_THROW(computeScreenSpaceAO(gtao, f.gbuffer, wrong, 0.5f, {}, 1, timer), InternalError);
 }
 
 TEST(ScreenSpaceAo, TimerScopesAndPassPlan) {
     Fixture f = openPlane(32);
     PassTimer timer;
-    computeScreenSpaceAO("gtao", f.gbuffer, f.view, 0.5f, paramsOf({"ao.half-res=1"}), 1, timer);
+    computeScreenSpaceAO(estimator("gtao"), f.gbuffer, f.view, 0.5f, paramsOf({"ao.half-res=1"}), 1, timer);
     std::vector<std::string> names;
     for (const auto& t : timer.timings()) names.push_back(t.name);
     EXPECT_EQ(names, (std::vector<std::string>{"ssao", "blur", "upsample"}));
-    ScreenSpaceAoPasses plan = planScreenSpaceAo("hbao", paramsOf({"blur=0"}));
-    EXPECT_TRUE(plan.evaluate);
-    EXPECT_FALSE(plan.blur);
-    EXPECT_FALSE(plan.upsample);
+    // The plan follows the same filter settings.
+    RenderRequest r;
+    r.ao = "hbao";
+    r.aovs = {"ao"};
+    r.params = paramsOf({"blur=0"});
+    const RenderPlan plan = planRender(SceneFeatures{}, r);
+    EXPECT_TRUE(plan.runs(kPassSsao));
+    EXPECT_FALSE(plan.runs(kPassBlur));
+    EXPECT_FALSE(plan.runs(kPassUpsample));
 }
 
 }  // namespace

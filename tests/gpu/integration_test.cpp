@@ -3,6 +3,7 @@
 // project's scenes and the off-screen occluder study (issues 3, 5 and 7).
 #include "eval/comparison.h"
 #include "gl/context.h"
+#include "methods/registry.h"
 #include "render/renderer.h"
 #include "scene/camera.h"
 #include "scene/gltf_loader.h"
@@ -69,9 +70,9 @@ TEST(Integration, ComparisonOfAllAoMethodsVoxelizesOnce) {
     RenderRequest r = requestFor(s, 32);
     r.voxelRes = 32;
     r.aovs = {"ao"};
-    for (const auto& m : aoMethods()) {
-        if (m == "none") continue;
-        r.ao = m;
+    for (const Method* m : registeredMethods()) {
+        if (m->kind != MethodKind::AO) continue;
+        r.ao = m->name;
         r.spp = 8;
         session.render(r);
     }

@@ -2,7 +2,7 @@
 // CPU triangle/box overlap test.
 #include "cone/cone_bounce.h"
 #include "gl/context.h"
-#include "render/gpu_scene.h"
+#include "core/gpu_scene.h"
 #include "voxelize/voxelize.h"
 
 #include <gtest/gtest.h>

@@ -81,7 +81,7 @@ Scene needleScene() {
 }
 
 // Error of a method against the same method on a reference scene, per pixel.
-std::optional<double> diffOf(const Method& m, const Outcome& a, const Outcome& b) {
+std::optional<double> diffOf(const stab::Method& m, const Outcome& a, const Outcome& b) {
     if (!a.ok() || !b.ok()) return std::nullopt;
     if (m.isGi()) {
         const double mb = surfaceMean(b.indirect, b.depth);
@@ -90,8 +90,8 @@ std::optional<double> diffOf(const Method& m, const Outcome& a, const Outcome& b
     return meanAbsDiff(a.ao, b.ao, b.depth);
 }
 
-const Method& methodNamed(const std::string& label) {
-    static const std::vector<Method> all = allMethodColumns();
+const stab::Method& methodNamed(const std::string& label) {
+    static const std::vector<stab::Method> all = allMethodColumns();
     for (const auto& m : all)
         if (m.label == label) return m;
     throw std::runtime_error("no method " + label);

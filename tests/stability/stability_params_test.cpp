@@ -25,7 +25,7 @@ RenderRequest requestFor(const Camera& camera, float radius, int size = 40) {
 
 using Outcomes = std::map<std::string, Outcome>;
 
-Outcomes runMethods(RenderSession& session, const RenderRequest& r, const std::vector<Method>& methods,
+Outcomes runMethods(RenderSession& session, const RenderRequest& r, const std::vector<stab::Method>& methods,
                     const std::string& caseName, bool expectAccepted = true) {
     Outcomes out;
     for (const auto& m : methods) {
@@ -39,14 +39,14 @@ Outcomes runMethods(RenderSession& session, const RenderRequest& r, const std::v
     return out;
 }
 
-const Method& col(const std::string& label) {
-    static const std::vector<Method> all = allMethodColumns();
+const stab::Method& col(const std::string& label) {
+    static const std::vector<stab::Method> all = allMethodColumns();
     for (const auto& m : all)
         if (m.label == label) return m;
     throw std::runtime_error(label);
 }
 
-std::optional<double> errorToReference(const Method& m, const Outcome& o, const Outcomes& all) {
+std::optional<double> errorToReference(const stab::Method& m, const Outcome& o, const Outcomes& all) {
     if (!o.ok()) return std::nullopt;
     if (!m.isGi()) {
         const Outcome& ref = all.count("reference AO") ? all.at("reference AO") : o;
@@ -91,7 +91,7 @@ TEST(StabilityParams, RadiusNearZeroAndLargerThanTheScene) {
 TEST(StabilityParams, VoxelGridResolutions) {
     Scene s = cornerScene(1.f);
     RenderSession session(s);
-    const std::vector<Method> methods = {col("vct AO"), col("vct GI"), col("reference AO"), col("reference GI")};
+    const std::vector<stab::Method> methods = {col("vct AO"), col("vct GI"), col("reference AO"), col("reference GI")};
     RenderRequest r = requestFor(cornerCamera(1.f), 0.5f, 32);
     auto ref = runMethods(session, r, {col("reference AO"), col("reference GI")}, "voxels ref");
     // 512^3 takes about a minute and several GB on llvmpipe: only with VCT_STABILITY_SLOW=1

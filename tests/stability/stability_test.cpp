@@ -34,7 +34,7 @@ RenderRequest baseRequest(const Camera& camera, float radius, int size = 40) {
 using Outcomes = std::map<std::string, Outcome>;
 
 // Runs `methods` over one session and checks the invariants of each.
-Outcomes runAll(RenderSession& session, const RenderRequest& base, const std::vector<Method>& methods,
+Outcomes runAll(RenderSession& session, const RenderRequest& base, const std::vector<stab::Method>& methods,
                 const std::string& caseName) {
     Outcomes out;
     for (const auto& m : methods) {
@@ -52,8 +52,8 @@ double relativeDiff(const Image& a, const Image& b, const Image& depth) {
     return meanAbsDiff(a, b, depth) / std::max(mb, 1e-30);
 }
 
-const Method& methodNamed(const std::string& label) {
-    static const std::vector<Method> all = allMethodColumns();
+const stab::Method& methodNamed(const std::string& label) {
+    static const std::vector<stab::Method> all = allMethodColumns();
     for (const auto& m : all)
         if (m.label == label) return m;
     throw std::runtime_error("no method " + label);
@@ -65,7 +65,7 @@ void recordAgainstReference(const std::string& caseName, const Outcomes& o) {
     const Outcome* refAo = o.count("reference AO") ? &o.at("reference AO") : nullptr;
     const Outcome* refGi = o.count("reference GI") ? &o.at("reference GI") : nullptr;
     for (const auto& [label, out] : o) {
-        const Method& m = methodNamed(label);
+        const stab::Method& m = methodNamed(label);
         std::optional<double> err;
         if (out.ok()) {
             if (!m.isGi() && refAo && refAo->ok() && label != "reference AO")

@@ -1,0 +1,49 @@
+#include "core/timing.h"
+
+#include <epoxy/gl.h>
+
+#include <chrono>
+
+namespace vct {
+
+double nowMs() {
+    using namespace std::chrono;
+    return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
+}
+
+PassTimer::Scope::Scope(PassTimer& timer, std::string name, bool gl)
+    : mTimer(timer), mName(std::move(name)), mGl(gl) {
+    if (mGl) {
+        glFinish();
+        if (mTimer.mGpuQueries) {
+            glGenQueries(1, &mQuery);
+            glBeginQuery(GL_TIME_ELAPSED, mQuery);
+        }
+    }
+    mStart = nowMs();
+}
+
+PassTimer::Scope::~Scope() {
+    PassTiming t;
+    t.name = mName;
+    if (mGl) {
+        if (mQuery) glEndQuery(GL_TIME_ELAPSED);
+        glFinish();
+    }
+    t.wallMs = nowMs() - mStart;
+    if (mQuery) {
+        GLuint64 ns = 0;
+        glGetQueryObjectui64v(mQuery, GL_QUERY_RESULT, &ns);
+        glDeleteQueries(1, &mQuery);
+        t.gpuMs = double(ns) * 1e-6;
+    }
+    mTimer.add(std::move(t));
+}
+
+double PassTimer::totalMs() const {
+    double s = 0;
+    for (const auto& t : mTimings) s += t.wallMs;
+    return s;
+}
+
+}  // namespace vct

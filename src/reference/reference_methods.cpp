@@ -1,0 +1,124 @@
+#include "reference/reference_methods.h"
+
+#include "reference/embree_scene.h"
+#include "reference/reference_ao.h"
+#include "reference/reference_gi.h"
+
+#include <memory>
+
+namespace vct {
+
+namespace {
+
+constexpr const char* kName = "reference";
+
+// The BVH is built on first use by either method and kept for the session.
+struct ReferenceSession {
+    std::unique_ptr<EmbreeScene> embree;
+};
+
+const EmbreeScene& embreeOf(MethodContext& ctx) {
+    ReferenceSession& s = ctx.session.get<ReferenceSession>("reference");
+    if (!s.embree) s.embree = std::make_unique<EmbreeScene>(ctx.scene);
+    return *s.embree;
+}
+
+ReferenceSettings settingsOf(const RenderRequest& r) {
+    ReferenceSettings base;
+    base.radius = r.radius;
+    base.spp = r.spp;
+    base.seed = r.seed;
+    base.sky = r.sky;
+    return referenceSettings().read(r.params, base);
+}
+
+std::vector<SurfacePoint> surfacePoints(const GBuffer& g) {
+    std::vector<SurfacePoint> pts;
+    for (const GBufferPoint& p : readGBufferPoints(g)) pts.push_back({p.position, p.normal, p.geomNormal, p.valid});
+    return pts;
+}
+
+void executeAo(MethodContext& ctx) {
+    if (!ctx.plan.runs(kPassReferenceAo)) return;
+    const ReferenceSettings settings = settingsOf(ctx.request);
+    const EmbreeScene& embree = embreeOf(ctx);
+    auto scope = ctx.timer.scope("reference_ao", false);
+    ReferenceAO ao = settings.pixelArea ? referenceAOPixelArea(embree, ctx.view, settings) : [&] {
+        ReferenceAO a = referenceAO(embree, surfacePoints(*ctx.gbuffer), settings);
+        a.width = ctx.gbuffer->width;
+        a.height = ctx.gbuffer->height;
+        return a;
+    }();
+    ctx.outputs.setImage(kAo, ao.aoImage());
+    ctx.outputs.setImage(kAoStderr, ao.stderrImage());
+    ctx.extra["reference_ao"] = {{"spp", ao.sppUsed}, {"mean_stderr", ao.meanStderr}, {"rays", ao.raysTraced},
+                                 {"primary_rays", ao.primaryRays}, {"rays_per_second", ao.raysPerSecond},
+                                 {"pixel", settings.pixelArea ? "area" : "center"}};
+}
+
+void executeGi(MethodContext& ctx) {
+    if (!ctx.plan.runs(kPassReferenceGi)) return;
+    const ReferenceSettings settings = settingsOf(ctx.request);
+    const EmbreeScene& embree = embreeOf(ctx);
+    auto scope = ctx.timer.scope("reference_gi", false);
+    ReferenceGI gi = referenceGI(embree, ctx.view, settings, settings.pixelArea);
+    ctx.outputs.setImage(kGiIndirect, gi.indirect);
+    ctx.outputs.setImage(kDirect, gi.direct);
+    ctx.outputs.setImage(kBeauty, gi.beauty);
+    // One channel: the mean of the RGB standard errors.
+    Image stderrMean(gi.width, gi.height, 1);
+    for (size_t i = 0; i < size_t(gi.width) * gi.height; ++i) {
+        const float* s = &gi.indirectStderr.pixels[3 * i];
+        stderrMean.pixels[i] = (s[0] + s[1] + s[2]) / 3.f;
+    }
+    ctx.outputs.setImage(kIndirectStderr, std::move(stderrMean));
+    ctx.extra["reference_gi"] = {{"spp", gi.sppUsed}, {"mean_stderr", gi.meanStderr}, {"rays", gi.raysTraced},
+                                 {"rays_per_second", gi.raysPerSecond}, {"bounces", settings.bounces}};
+}
+
+}  // namespace
+
+const Method& referenceAoMethod() {
+    static const Method m = [] {
+        Method r;
+        r.name = kName;
+        r.kind = MethodKind::AO;
+        r.summary = "ray-traced AO (Embree): the ground truth every AO method is scored against";
+        r.groundTruth = true;
+        r.passes = {{kPassReferenceAo, "--ao is not reference"}};
+        r.aovs = {{{"ao_stderr", 1, "reference AO: per-pixel standard error"}, kAoStderr}};
+        r.settings = [] { return referenceSettings().docs(); };
+        r.programs = [] { return std::vector<ProgramKey>{}; };
+        r.declare = [](const PlanContext&, PassDeclarations& d) {
+            // Its own noise is always reported with it.
+            d.add({kPassReferenceAo, {kGBuffer}, {kAo, kAoStderr}, "ray-traced AO at the G-buffer's points", true});
+        };
+        r.execute = executeAo;
+        return r;
+    }();
+    return m;
+}
+
+const Method& referenceGiMethod() {
+    static const Method m = [] {
+        Method r;
+        r.name = kName;
+        r.kind = MethodKind::GI;
+        r.summary = "path-traced GI (Embree): the ground truth every GI method is scored against";
+        r.groundTruth = true;
+        r.lightsTheImage = true;
+        r.passes = {{kPassReferenceGi, "--gi is not reference"}};
+        r.aovs = {{{"indirect_stderr", 1, "reference GI: per-pixel standard error of indirect"}, kIndirectStderr}};
+        r.settings = [] { return referenceSettings().docs(); };
+        r.programs = [] { return std::vector<ProgramKey>{}; };
+        r.declare = [](const PlanContext&, PassDeclarations& d) {
+            d.add({kPassReferenceGi, {}, {kGiIndirect, kDirect, kBeauty, kIndirectStderr}, "path-traced ground truth",
+                   true});
+        };
+        r.execute = executeGi;
+        return r;
+    }();
+    return m;
+}
+
+}  // namespace vct

@@ -1,0 +1,61 @@
+#include "vct/sparse_vct.h"
+
+#include "vct/vct_passes.h"
+#include "vct/voxel_volume.h"
+
+namespace vct {
+
+SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache) {
+    SparseFrame& f = ctx.frame.get<SparseFrame>("vct.sparse");
+    if (f.voxels) return f;
+    const RenderRequest& r = ctx.request;
+    const bool inject = ctx.plan.runs(kPassInject);
+    auto& slot = cache.grids[voxelGridKey(r, inject, false)];
+    if (!slot || !r.reuseVoxels) {
+        auto scope = ctx.timer.scope("voxelize", false);
+        slot = std::make_shared<SparseVoxelScene>(buildSparseVoxels(ctx.scene, r.voxelRes, inject, r.sky, r.params));
+        ctx.runCounts["voxelize"]++;
+    }
+    f.voxels = slot;
+    const SparseVoxelScene& sv = *slot;
+    ctx.extra["voxels"] = {{"backend", "vdb"},
+                           {"resolution", {sv.resolution.x, sv.resolution.y, sv.resolution.z}},
+                           {"voxel_size", sv.voxelSize},
+                           {"active_voxels", sv.stats.activeVoxels},
+                           {"memory_bytes", sv.stats.memoryBytes},
+                           {"dense_bytes", sv.stats.denseBytes},
+                           {"voxelize_s", sv.stats.voxelizeSeconds},
+                           {"inject_s", sv.stats.injectSeconds},
+                           {"levels_s", sv.stats.levelsSeconds},
+                           {"bounces", 0}};  // the sparse path injects direct light only
+    for (const GBufferPoint& g : readGBufferPoints(*ctx.gbuffer, true)) {
+        SparsePoint p;
+        p.position = g.position;
+        p.normal = g.normal;
+        p.geomNormal = g.geomNormal;
+        p.albedo = g.albedo;
+        p.valid = g.valid;
+        f.points.push_back(p);
+    }
+    return f;
+}
+
+void traceSparse(MethodContext& ctx, MethodKind kind, const SparseFrame& f, const ConeSettings& cone) {
+    const GBuffer& g = *ctx.gbuffer;
+    if (kind == MethodKind::AO && ctx.plan.runs(kPassConeAo)) {
+        auto scope = ctx.timer.scope("cone_ao", false);
+        Image ao(g.width, g.height, 1);
+        ao.pixels = sparseConeAO(*f.voxels, f.points, ctx.request.radius, cone);
+        ctx.outputs.setImage(kAo, std::move(ao));
+    }
+    if (kind == MethodKind::GI && ctx.plan.runs(kPassConeGi)) {
+        auto scope = ctx.timer.scope("cone_gi", false);
+        const std::vector<glm::vec3> gi = sparseConeGI(*f.voxels, f.points, ctx.request.sky, cone);
+        Image indirect(g.width, g.height, 3);
+        for (size_t i = 0; i < gi.size(); ++i)
+            for (int c = 0; c < 3; ++c) indirect.pixels[3 * i + c] = gi[i][c];
+        ctx.outputs.setImage(kGiIndirect, std::move(indirect));
+    }
+}
+
+}  // namespace vct

@@ -1,0 +1,35 @@
+// --backend vdb: sparse OpenVDB voxels and the CPU cone tracer (src/vdb), on the same
+// G-buffer points as every other method. Whole-scene grid, isotropic levels, direct light only.
+#pragma once
+
+#include "cone/cone_settings.h"
+#include "core/method.h"
+#include "vdb/sparse_cone.h"
+#include "vdb/sparse_voxels.h"
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace vct {
+
+// The sparse grids a session keeps, keyed as the dense ones (vct/voxel_volume.h).
+struct SparseVolumeCache {
+    std::map<std::string, std::shared_ptr<SparseVoxelScene>> grids;
+};
+
+// What the AO and GI cones of one render share: the grids and the G-buffer's points.
+struct SparseFrame {
+    std::shared_ptr<SparseVoxelScene> voxels;
+    std::vector<SparsePoint> points;
+};
+
+// The render's sparse grids and points (built once per render, the grids reused across the
+// session unless request.reuseVoxels is false); fills extra["voxels"].
+SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache);
+
+// The cone pass of `kind` over the sparse grids: AO into kAo, GI into kGiIndirect.
+void traceSparse(MethodContext& ctx, MethodKind kind, const SparseFrame& frame, const ConeSettings& cone);
+
+}  // namespace vct

@@ -1,0 +1,172 @@
+#include "vct/vct_method.h"
+
+#include "cone/cone_bounce.h"
+#include "cone/cone_programs.h"
+#include "cone/cone_settings.h"
+#include "cone/cone_trace.h"
+#include "gl/context.h"
+#include "gl/readback.h"
+#include "vct/sparse_vct.h"
+#include "vct/vct_passes.h"
+#include "vct/vct_settings.h"
+#include "vct/voxel_region.h"
+#include "vct/voxel_volume.h"
+#include "voxelize/voxel_programs.h"
+
+namespace vct {
+
+namespace {
+
+bool isVct(const std::string& method) { return method == kVctMethodName; }
+
+// The voxel passes both cone methods share (declared by each; the planner keeps one).
+void declareVoxelPasses(const PlanContext& ctx, PassDeclarations& d) {
+    const RenderRequest& r = ctx.request;
+    d.add({kPassVoxelize, {}, {kVoxels}, "world-space occupancy for cone tracing; " + voxelRegionExplanation(r)});
+    // Without lights or emission the voxels still carry sky light once it bounces between
+    // them (dense grid only: the vdb backend and clipmaps hold direct light only).
+    const bool gi = isVct(r.gi);
+    const bool skyBounces = gi && r.sky > 0.f && r.backend != "vdb" && clipmapLevelCount(r) == 0 &&
+                            readVctBounces(r.params) > 0;
+    const bool radiance = gi && (ctx.lights() || ctx.scene.hasEmission || skyBounces);
+    if (!gi)
+        d.skip(kPassInject, "AO needs opacity only, not radiance (no --gi vct)");
+    else if (!radiance)
+        d.skip(kPassInject,
+               "the scene has no lights and no emission, and no sky light bounces between voxels (--sky 0, "
+               "vct.bounces=0, --backend vdb or clipmaps): cones see the sky directly");
+    else if (!ctx.lights() && !ctx.scene.hasEmission)
+        d.add({kPassInject, {kVoxels}, {kVoxelRadiance},
+               "no lights or emission: empty direct light, then vct.bounces bounces of the sky light between the "
+               "voxels (timed as 'bounce')"});
+    else
+        d.add({kPassInject, {kVoxels}, {kVoxelRadiance},
+               "direct light and emission into the voxels, then vct.bounces diffuse bounces between them (dense "
+               "grid; timed as 'bounce')"});
+    std::vector<ResourceId> mipReads{kVoxels};
+    if (radiance) mipReads.push_back(kVoxelRadiance);
+    d.add({kPassMips, mipReads, {kVoxelMips}, "filtered levels for wide cones"});
+}
+
+void declareVoxelView(const PlanContext& ctx, PassDeclarations& d) {
+    const RenderRequest& r = ctx.request;
+    if (r.backend == "vdb")
+        for (const std::string& aov : r.aovs)
+            if (aov.rfind("voxel_", 0) == 0)
+                throw UsageError("--aov " + aov + ": voxel_* AOVs show the dense grid: use --backend gl");
+    d.add({kPassVoxelView, {kVoxelMips}, {kVoxelView}, "voxel grid seen from the camera"});
+}
+
+// What the AO and the GI cones of one render share.
+struct VctFrame {
+    bool built = false;
+    VoxelVolume volume;
+    bool viewsDone = false;
+};
+
+struct VctSession {
+    VoxelVolumeCache dense;
+    SparseVolumeCache sparse;
+};
+
+void traceVoxelViews(MethodContext& ctx, const VoxelGrid& grid) {
+    const RenderRequest& r = ctx.request;
+    const int level = vctSettings().read(r.params).viewLevel;
+    for (const std::string& aov : r.aovs) {
+        if (aov.rfind("voxel_", 0) != 0) continue;
+        const std::string what = aov.substr(6);
+        GlTexture t = rayMarchVoxels(grid, ctx.view, what, level, ctx.timer);
+        GlContext::shared().checkErrors("voxel_view");
+        const Image rgba = readTexture2D(t.id(), ctx.view.width, ctx.view.height, 4);
+        const int channels = what == "opacity" ? 1 : 3;
+        Image img(ctx.view.width, ctx.view.height, channels);
+        for (size_t i = 0; i < size_t(ctx.view.width) * ctx.view.height; ++i)
+            for (int c = 0; c < channels; ++c) img.pixels[i * channels + c] = rgba.pixels[4 * i + (what == "opacity" ? 3 : c)];
+        ctx.outputs.setImage(ResourceId{aov}, std::move(img));
+    }
+}
+
+void executeVct(MethodContext& ctx, MethodKind kind) {
+    if (!ctx.plan.runs(kPassVoxelize)) return;
+    const RenderRequest& r = ctx.request;
+    const ConeSettings cone = readConeSettings(r.params);
+    VctSession& session = ctx.session.get<VctSession>("vct");
+    if (r.backend == "vdb") {
+        traceSparse(ctx, kind, sparseFrameFor(ctx, session.sparse), cone);
+        return;
+    }
+    VctFrame& frame = ctx.frame.get<VctFrame>("vct");
+    if (!frame.built) {
+        frame.volume = voxelVolumeFor(ctx, cone, session.dense);
+        ctx.extra["voxels"] = frame.volume.stats;
+        frame.built = true;
+    }
+    const VoxelVolume& v = frame.volume;
+    GlContext& gl = GlContext::shared();
+    if (kind == MethodKind::AO && ctx.plan.runs(kPassConeAo)) {
+        GlTexture ao = v.clipmap ? coneTraceClipmapAO(*v.clipmap, *ctx.gbuffer, ctx.view, r.radius, cone, ctx.timer)
+                                 : coneTraceAO(*v.grid, *ctx.gbuffer, ctx.view, r.radius, cone, ctx.timer);
+        gl.checkErrors("cone_ao");
+        ctx.outputs.setTexture(kAo, std::move(ao), 1);
+    }
+    if (kind == MethodKind::GI && ctx.plan.runs(kPassConeGi)) {
+        GlTexture gi = v.clipmap ? coneTraceClipmapGI(*v.clipmap, *ctx.gbuffer, ctx.view, r.sky, cone, ctx.timer)
+                                 : coneTraceGI(*v.grid, *ctx.gbuffer, ctx.view, r.sky, cone, ctx.timer);
+        gl.checkErrors("cone_gi");
+        ctx.outputs.setTexture(kGiIndirect, std::move(gi), 4);
+    }
+    if (ctx.plan.runs(kPassVoxelView) && !frame.viewsDone) {
+        traceVoxelViews(ctx, *v.grid);
+        frame.viewsDone = true;
+    }
+}
+
+std::vector<ProgramKey> vctPrograms() {
+    std::vector<ProgramKey> keys = voxelProgramVariants();
+    for (const ProgramKey& k : coneProgramVariants()) keys.push_back(k);
+    return keys;
+}
+
+Method makeVctMethod(MethodKind kind) {
+    Method m;
+    m.name = kVctMethodName;
+    m.kind = kind;
+    const bool ao = kind == MethodKind::AO;
+    m.summary = ao ? "voxel cone traced AO: cones over the voxels' (directional) opacity, each limited to R"
+                   : "voxel cone traced diffuse GI: cones gather the voxels' injected and bounced radiance";
+    const std::string noVoxels = "no method reads voxels (--ao {ao}, --gi {gi})";
+    m.passes = {{kPassVoxelize, noVoxels},
+                {kPassInject, noVoxels},
+                {kPassMips, noVoxels},
+                {ao ? kPassConeAo : kPassConeGi, ao ? "--ao is not vct" : "--gi is not vct"},
+                {kPassVoxelView, "no voxel grid in this render"}};
+    m.aovs = {{{"voxel_albedo", 3, "voxel grid albedo, ray-marched from the camera"}, kVoxelView},
+              {{"voxel_opacity", 1, "voxel grid opacity, ray-marched from the camera"}, kVoxelView}};
+    if (!ao) m.aovs.push_back({{"voxel_radiance", 3, "voxel grid radiance, ray-marched from the camera"}, kVoxelView});
+    m.settings = vctSettingDocs;
+    m.programs = vctPrograms;
+    m.declare = [kind](const PlanContext& ctx, PassDeclarations& d) {
+        declareVoxelPasses(ctx, d);
+        if (kind == MethodKind::AO)
+            d.add({kPassConeAo, {kGBuffer, kVoxelMips}, {kAo}, "world-space AO cones"});
+        else
+            d.add({kPassConeGi, {kGBuffer, kVoxelMips}, {kGiIndirect}, "diffuse GI cones"});
+        declareVoxelView(ctx, d);
+    };
+    m.execute = [kind](MethodContext& ctx) { executeVct(ctx, kind); };
+    return m;
+}
+
+}  // namespace
+
+const Method& vctAoMethod() {
+    static const Method m = makeVctMethod(MethodKind::AO);
+    return m;
+}
+
+const Method& vctGiMethod() {
+    static const Method m = makeVctMethod(MethodKind::GI);
+    return m;
+}
+
+}  // namespace vct

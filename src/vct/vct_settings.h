@@ -1,0 +1,24 @@
+// The VCT methods' own settings (the cone, bounce and voxel settings are their building
+// blocks': cone/cone_settings.h, cone/cone_bounce.h, voxelize/voxel_settings.h).
+#pragma once
+
+#include "core/settings.h"
+
+#include <string>
+#include <vector>
+
+namespace vct {
+
+struct VctSettings {
+    // Which part of the scene the voxels cover: scene, fit (the visible points grown by R),
+    // or auto (fit for --ao vct without --gi vct, else scene). See vct/voxel_region.h.
+    std::string region = "auto";
+    int clipmapLevels = 0;  // nested levels around the camera (0 = one dense grid)
+    int viewLevel = 0;      // mip level the voxel_* AOVs show
+};
+const SettingsTable<VctSettings>& vctSettings();
+
+// Every key a VCT render reads: the cones', bounces', voxels' and the settings above.
+std::vector<SettingDoc> vctSettingDocs();
+
+}  // namespace vct

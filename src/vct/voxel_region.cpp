@@ -1,0 +1,109 @@
+#include "vct/voxel_region.h"
+
+#include "gl/readback.h"
+#include "vct/vct_passes.h"
+#include "vct/vct_settings.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace vct {
+
+std::string voxelRegionMode(const RenderRequest& r) {
+    const std::string mode = vctSettings().read(r.params).region;
+    if (mode != "auto") return mode;
+    return (r.ao == kVctMethodName && r.gi != kVctMethodName) ? "fit" : "scene";
+}
+
+int clipmapLevelCount(const RenderRequest& r) {
+    return vctSettings().read(r.params).clipmapLevels;
+}
+
+std::string voxelRegionExplanation(const RenderRequest& r) {
+    std::ostringstream s;
+    const std::string mode = voxelRegionMode(r);
+    const bool explicitMode = r.params.has("vct.region") && r.params.values().at("vct.region") != "auto";
+    if (mode == "fit")
+        s << "region fit to the visible points grown by R = " << r.radius << " + cone footprint"
+          << (r.gi == kVctMethodName ? " (vct.region=fit: GI cones see only that)" : " (AO only: nothing farther occludes)");
+    else
+        s << "region = scene bounds"
+          << (explicitMode ? " (vct.region=scene)" : r.gi == kVctMethodName ? " (GI: light travels far)" : "");
+    const int levels = clipmapLevelCount(r);
+    if (levels > 0)
+        s << "; " << levels << " clipmap levels of " << r.voxelRes << "^3 around the camera (isotropic mips)";
+    else
+        s << "; one dense grid of " << r.voxelRes << " voxels along its longest axis";
+    return s.str();
+}
+
+Bounds3 visibleBounds(const Image& position) {
+    Bounds3 b;
+    if (position.channels < 4) return b;
+    const size_t n = size_t(position.width) * size_t(position.height);
+    for (size_t i = 0; i < n; ++i) {
+        const float* p = &position.pixels[4 * i];
+        if (!(p[3] > 0.f) || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) continue;
+        b.min = glm::min(b.min, glm::vec3(p[0], p[1], p[2]));
+        b.max = glm::max(b.max, glm::vec3(p[0], p[1], p[2]));
+    }
+    return b;
+}
+
+Bounds3 fitAoRegion(const Bounds3& visible, const Bounds3& scene, float reach, float marginVoxels, int voxelRes) {
+    if (visible.empty() || scene.empty()) return scene;
+    // makeGridLayout gives voxel = longest extent / (res - 2); with the extent itself
+    // (visible + 2 reach + 2 m voxel) that solves to voxel = (visible + 2 reach) / (res - 2 - 2 m).
+    const float cells = std::max(1.f, float(voxelRes - 2) - 2.f * marginVoxels);
+    const float voxel = (visible.maxExtent() + 2.f * reach) / cells;
+    const float grow = reach + marginVoxels * voxel;
+    Bounds3 b;
+    b.min = glm::max(visible.min - glm::vec3(grow), scene.min);
+    b.max = glm::min(visible.max + glm::vec3(grow), scene.max);
+    return glm::any(glm::greaterThan(b.min, b.max)) ? scene : b;
+}
+
+nlohmann::json VoxelRegion::toJson() const {
+    nlohmann::json j = {{"mode", mode},
+                        {"why", why},
+                        {"min", {bounds.min.x, bounds.min.y, bounds.min.z}},
+                        {"max", {bounds.max.x, bounds.max.y, bounds.max.z}}};
+    if (!visible.empty())
+        j["visible"] = {{"min", {visible.min.x, visible.min.y, visible.min.z}},
+                        {"max", {visible.max.x, visible.max.y, visible.max.z}}};
+    return j;
+}
+
+VoxelRegion chooseVoxelRegion(const RenderRequest& r, const Scene& scene, const GBuffer* gbuffer,
+                              float apertureDeg, float offsetVoxels) {
+    VoxelRegion region;
+    region.mode = voxelRegionMode(r);
+    region.bounds = scene.bounds;
+    if (region.mode == "scene") {
+        region.why = r.gi == kVctMethodName ? "GI: light reaches the view from the whole scene" : "vct.region=scene";
+        return region;
+    }
+    if (!gbuffer || !gbuffer->position) {
+        region.mode = "scene";
+        region.why = "fit needs the G-buffer, which this render does not have";
+        return region;
+    }
+    region.visible = visibleBounds(readTexture2D(gbuffer->position.id(), gbuffer->width, gbuffer->height, 4));
+    if (region.visible.empty()) {
+        region.mode = "scene";
+        region.why = "no visible surface (all sky): nothing to fit";
+        return region;
+    }
+    // R and the footprint's radius there; the start offset and one voxel of trilinear support.
+    const float reach = r.radius * (1.f + std::tan(0.5f * apertureDeg * 3.14159265f / 180.f));
+    region.bounds = fitAoRegion(region.visible, scene.bounds, reach, offsetVoxels + 1.f, r.voxelRes);
+    std::ostringstream why;
+    why << "visible points grown by the cone reach " << reach << " (R = " << r.radius << ") + "
+        << offsetVoxels + 1.f << " voxels, clipped to the scene";
+    if (r.gi == kVctMethodName) why << " (vct.region=fit with GI: light from outside is lost)";
+    region.why = why.str();
+    return region;
+}
+
+}  // namespace vct

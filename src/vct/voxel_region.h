@@ -1,0 +1,54 @@
+// Which part of the scene the voxels cover (vct.region) and how (vct.clipmap.levels).
+//
+// AO region fitting: with --ao vct alone, only geometry within R of a visible surface point
+// can change the image (A_R of BRIEF section 1 ignores anything farther). The grid is fitted
+// to the bounds of the G-buffer's visible positions grown by the cones' reach, clipped to the
+// scene bounds, and --voxel-res is spent there. The reach is R plus the radius of a cone's
+// footprint at distance R (R tan(aperture / 2): the cones see that far sideways, and cropping
+// it changed the estimate - the off-screen overhang's ROI error rose from 0.14 to 0.23 with
+// R alone) plus the start offset and one voxel of trilinear support.
+// GI needs the whole scene (light travels far), so `auto` keeps the scene for --gi vct; an
+// explicit vct.region=fit with GI crops what the cones can gather light from.
+//
+// Keys: vct.region and vct.clipmap.levels (vct/vct_settings.h).
+#pragma once
+
+#include "image/image.h"
+#include "core/gbuffer.h"
+#include "core/request.h"
+#include "scene/scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace vct {
+
+// "scene" or "fit" (auto resolved: fit when --ao vct and not --gi vct).
+std::string voxelRegionMode(const RenderRequest& request);
+// vct.clipmap.levels (0 = one dense grid).
+int clipmapLevelCount(const RenderRequest& request);
+// One line for --explain: the region and levels this request will use, and why.
+std::string voxelRegionExplanation(const RenderRequest& request);
+
+// Bounds of the xyz of pixels whose w > 0 (G-buffer position convention) and finite; empty if none.
+Bounds3 visibleBounds(const Image& position);
+
+// `visible` grown by `reach` (world) + marginVoxels voxels, clipped to `scene`, where the voxel is the
+// one a grid of `voxelRes` along the grown box's longest axis will have (makeGridLayout).
+Bounds3 fitAoRegion(const Bounds3& visible, const Bounds3& scene, float reach, float marginVoxels, int voxelRes);
+
+struct VoxelRegion {
+    std::string mode;   // "scene" | "fit"
+    std::string why;
+    Bounds3 bounds;     // what the voxels (or the clipmap's coarsest level) cover
+    Bounds3 visible;    // fit: bounds of the visible points
+    nlohmann::json toJson() const;
+};
+
+// The region of this request. `gbuffer` may be null (no G-buffer in the plan): then the scene.
+// apertureDeg and offsetVoxels are the cones' (ConeSettings).
+VoxelRegion chooseVoxelRegion(const RenderRequest& request, const Scene& scene, const GBuffer* gbuffer,
+                              float apertureDeg, float offsetVoxels);
+
+}  // namespace vct

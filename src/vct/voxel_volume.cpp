@@ -1,0 +1,124 @@
+#include "vct/voxel_volume.h"
+
+#include "cone/cone_bounce.h"
+#include "gl/context.h"
+#include "vct/vct_passes.h"
+#include "vct/voxel_region.h"
+#include "voxelize/voxelize.h"
+
+namespace vct {
+
+std::string voxelGridKey(const RenderRequest& r, bool inject, bool aniso) {
+    std::string k = std::to_string(r.voxelRes) + (inject ? "+inject" : "") + (aniso ? "+aniso" : "");
+    // Bounces trace with the pixel cones' settings: then every cone parameter shapes the grid.
+    const bool bounced = inject && readVctBounces(r.params) > 0;
+    for (const auto& [key, value] : r.params.values())
+        if (key.rfind("vct.voxel.", 0) == 0 || key.rfind("vct.inject.", 0) == 0 || key.rfind("vct.bounce", 0) == 0 ||
+            (bounced && key.rfind("vct.", 0) == 0 && key.rfind("vct.view.", 0) != 0))
+            k += ";" + key + "=" + value;
+    if (inject) k += ";sky=" + std::to_string(r.sky);
+    return k;
+}
+
+namespace {
+
+std::string boundsKey(const Bounds3& b) {
+    std::string k;
+    for (int a = 0; a < 3; ++a) k += std::to_string(b.min[a]) + "," + std::to_string(b.max[a]) + ",";
+    return k;
+}
+
+// A scene with no lights and no emission injects nothing: its voxels emit no radiance, and
+// GI cones see only the sky through them. A 1^3 zero texture (zero border) stands in for
+// the radiance volume so the cone shaders sample 0 everywhere without a special case.
+void attachDarkRadiance(VoxelGrid& g) {
+    if (g.radiance) return;
+    g.radiance = createTexture3D(GL_RGBA16F, 1, 1, 1, 1);
+    const float zero[4] = {0, 0, 0, 0};
+    glClearTexImage(g.radiance.id(), 0, GL_RGBA, GL_FLOAT, zero);
+}
+
+}  // namespace
+
+VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVolumeCache& cache) {
+    const RenderRequest& r = ctx.request;
+    const bool inject = ctx.plan.runs(kPassInject);
+    const int levels = clipmapLevelCount(r);
+    const VoxelRegion region = chooseVoxelRegion(r, ctx.scene, ctx.gbuffer, cone.apertureDeg, cone.offsetVoxels);
+    // Clipmaps keep isotropic mips only (clipmap/clipmap.h).
+    const bool aniso = levels == 0 && cone.anisotropic;
+    std::string key = voxelGridKey(r, inject, aniso) + ";region=" + boundsKey(region.bounds);
+    if (levels > 0) {
+        const glm::vec3 e = r.camera.eye;
+        key += ";clipmap=" + std::to_string(levels) + "@" + std::to_string(e.x) + "," + std::to_string(e.y) + "," +
+               std::to_string(e.z);
+    }
+    VoxelVolume v;
+    if (r.reuseVoxels) {
+        if (levels > 0) {
+            auto it = cache.clipmaps.find(key);
+            if (it != cache.clipmaps.end()) v.clipmap = it->second;
+        } else {
+            auto it = cache.grids.find(key);
+            if (it != cache.grids.end()) v.grid = it->second;
+        }
+    }
+    GlContext& gl = GlContext::shared();
+    if (levels > 0 && !v.clipmap) {
+        // Bounce cones would run inside one level and take its border for the sky: clipmap
+        // levels hold direct light only.
+        refuseVctBounces(r.params, inject, "vct.clipmap.levels");
+        const ClipmapLayout layout = computeClipmapLayout(region.bounds, r.camera.eye, levels, r.voxelRes);
+        v.clipmap = std::make_shared<Clipmap>(buildClipmap(ctx.gpu, ctx.scene, layout, inject, r.params, ctx.timer));
+        gl.checkErrors("clipmap");
+        ctx.runCounts["voxelize"]++;
+        if (inject) ctx.runCounts["inject"]++;
+        ctx.runCounts["mips"]++;
+        if (r.reuseVoxels) cache.clipmaps[key] = v.clipmap;
+    } else if (levels == 0 && !v.grid) {
+        v.grid = std::make_shared<VoxelGrid>(voxelizeScene(ctx.gpu, region.bounds, r.voxelRes, r.params, ctx.timer));
+        gl.checkErrors("voxelize");
+        ctx.runCounts["voxelize"]++;
+        if (inject) {
+            injectRadiance(*v.grid, ctx.gpu, ctx.scene, r.params, ctx.timer);
+            gl.checkErrors("inject");
+            ctx.runCounts["inject"]++;
+            traceVoxelBounces(*v.grid, r.sky, cone, r.params, ctx.timer);
+            gl.checkErrors("bounce");
+        }
+        buildMips(*v.grid, aniso, ctx.timer);
+        gl.checkErrors("mips");
+        ctx.runCounts["mips"]++;
+        if (r.reuseVoxels) cache.grids[key] = v.grid;
+    }
+    if (!inject && ctx.plan.runs(kPassConeGi)) {
+        if (v.clipmap)
+            for (VoxelGrid& level : v.clipmap->levels) attachDarkRadiance(level);
+        else
+            attachDarkRadiance(*v.grid);
+    }
+    if (v.clipmap) {
+        // The coarsest level covers the region: it serves the voxel_* views. Aliasing
+        // shared_ptr: the level lives as long as the clipmap.
+        v.grid = std::shared_ptr<VoxelGrid>(v.clipmap, &v.clipmap->levels.back());
+        v.stats = clipmapStats(*v.clipmap);
+    } else {
+        const VoxelGrid& g = *v.grid;
+        const glm::vec3 hi = g.origin + glm::vec3(g.resolution) * g.voxelSize;
+        v.stats = {{"resolution", {g.resolution.x, g.resolution.y, g.resolution.z}},
+                   {"voxel_size", g.voxelSize},
+                   {"grid_min", {g.origin.x, g.origin.y, g.origin.z}},
+                   {"grid_max", {hi.x, hi.y, hi.z}},
+                   {"occupied", g.occupiedVoxels},
+                   {"memory_bytes", g.memoryBytes},
+                   {"mips", g.anisotropic ? "anisotropic" : "isotropic"},
+                   {"dense_voxels", size_t(g.resolution.x) * g.resolution.y * g.resolution.z}};
+    }
+    v.stats["region"] = region.toJson();
+    v.stats["clipmap_levels"] = levels;
+    // Extra bounces in the voxels: the dense grid's vct.bounces; clipmaps hold direct light only.
+    v.stats["bounces"] = inject && levels == 0 ? readVctBounces(r.params) : 0;
+    return v;
+}
+
+}  // namespace vct

@@ -1,0 +1,38 @@
+// The voxels of one VCT render on the GPU: a dense grid over the chosen region, or a
+// clipmap around the camera (vct.clipmap.levels > 0), voxelized, injected (GI) and filtered
+// as the plan says, or taken from the session's cache of grids keyed by everything that
+// shapes them.
+#pragma once
+
+#include "clipmap/clipmap.h"
+#include "cone/cone_settings.h"
+#include "core/method.h"
+#include "voxelize/voxel_grid.h"
+
+#include <nlohmann/json.hpp>
+
+#include <map>
+#include <memory>
+#include <string>
+
+namespace vct {
+
+struct VoxelVolume {
+    std::shared_ptr<VoxelGrid> grid;   // dense path; the clipmap's coarsest level otherwise
+    std::shared_ptr<Clipmap> clipmap;  // null on the dense path
+    nlohmann::json stats;              // extra["voxels"]
+};
+
+// The grids a session keeps (the key: resolution, injection, bounces, region, clipmap).
+struct VoxelVolumeCache {
+    std::map<std::string, std::shared_ptr<VoxelGrid>> grids;
+    std::map<std::string, std::shared_ptr<Clipmap>> clipmaps;
+};
+
+// A key of everything a grid depends on: two requests with the same key share one grid.
+std::string voxelGridKey(const RenderRequest& request, bool inject, bool aniso);
+
+// Builds (or reuses, unless request.reuseVoxels is false) the volume of this render.
+VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVolumeCache& cache);
+
+}  // namespace vct

@@ -1,0 +1,19 @@
+// The voxel settings both backends read (the dense GPU grid and the sparse CPU one).
+#pragma once
+
+#include "core/settings.h"
+
+namespace vct {
+
+// Storage of emission, radiance and the directional mips: half is RGBA16F (the contract's,
+// clamping at 65504), float RGBA32F; auto picks float when the scene's emission or lights
+// could exceed the half range (e.g. emission 1e6).
+enum class VoxelPrecision { Auto, Half, Float };
+
+struct VoxelSettings {
+    VoxelPrecision precision = VoxelPrecision::Auto;
+    float injectOffset = 2.f;  // voxels along the normal where injection's shadow rays start
+};
+const SettingsTable<VoxelSettings>& voxelSettings();
+
+}  // namespace vct
