@@ -7,11 +7,11 @@
 #include "gl/context.h"
 #include "methods/registry.h"
 #include "render/renderer.h"
+#include "util/atomic_file.h"
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -289,11 +289,8 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
     }
     if (write) {
         writeImage(path("valid.png"), valid);
-        const std::string json = doc.dump(2) + "\n";
-        std::ofstream(path("results.json.tmp")) << json;
-        fs::rename(path("results.json.tmp"), path("results.json"));
-        std::ofstream(path("results.csv.tmp")) << resultsCsv(doc);
-        fs::rename(path("results.csv.tmp"), path("results.csv"));
+        writeTextFileAtomic(path("results.json"), doc.dump(2) + "\n");
+        writeTextFileAtomic(path("results.csv"), resultsCsv(doc));
     }
     return doc;
 }

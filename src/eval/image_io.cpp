@@ -3,15 +3,14 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <stdexcept>
-#include <unistd.h>
 
 #include "eval/validate.h"
+#include "util/atomic_file.h"
 
 namespace vct {
 
@@ -34,17 +33,6 @@ FileKind fileKindOf(const std::string& path) {
     if (ext == ".png") return FileKind::Png;
     throw std::invalid_argument("writeImage: unsupported extension '" + ext + "' in " + path +
                                 " (use .exr or .png)");
-}
-
-// "dir/.name.tmp-<pid>-<n>.ext": same directory (so rename is atomic on one file system),
-// hidden, unique per process and call, and keeping the extension for OIIO's plugin choice.
-std::string temporaryPathFor(const std::string& path) {
-    static std::atomic<unsigned> counter{0};
-    size_t slash = path.find_last_of('/');
-    std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
-    std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-    return dir + "." + name + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) +
-           lowercaseExtension(path);
 }
 
 std::vector<std::string> defaultChannelNames(int channels) {

@@ -1,0 +1,85 @@
+// What the glTF loader's files share and callers never see: the state of one model's
+// conversion, the wording of its messages, and the function each file gives the others
+// (accessors, materials, primitives, lights and cameras, nodes).
+#pragma once
+
+#include "scene/gltf_loader.h"
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wall"
+#pragma GCC diagnostic ignored "-Wextra"
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#include <tiny_gltf.h>
+#pragma GCC diagnostic pop
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace vct::gltf_detail {
+
+// One model on its way to a Scene: the elements converted so far and what later elements
+// need of them.
+struct LoadContext {
+    const tinygltf::Model& model;
+    std::string path;
+    Scene scene;
+    std::vector<int> sceneTextureFromGltf;                             // -1 = not converted yet
+    std::map<std::tuple<int, bool, bool>, int> sceneTextureFromImage;  // (image, repeatS, repeatT) -> texture
+    int defaultMaterial = -1;
+    size_t degenerateCount = 0;
+    size_t repairedNormalCount = 0;
+    std::vector<size_t> camerasWithInfiniteFar;
+
+    LoadContext(const tinygltf::Model& m, const std::string& p) : model(m), path(p) {}
+
+    [[noreturn]] void fail(const std::string& what) const { throw SceneError(path + ": " + what); }
+};
+
+// Messages (gltf_loader.cpp). label("node", 3, "lamp") = "node 3 'lamp'"; without a name,
+// "node 3".
+std::string label(const char* kind, int index, const std::string& name);
+std::string str3(const glm::vec3& v);
+bool finite3(const glm::vec3& v);
+
+// "texture 7 out of range [0, 3)": every reference to a missing element reads the same.
+template <typename Index>
+std::string outOfRange(const std::string& what, Index index, size_t count) {
+    return what + " " + std::to_string(index) + " out of range [0, " + std::to_string(count) + ")";
+}
+
+// Accessors (gltf_accessors.cpp). `ctx` names the user in messages, e.g. "mesh 'floor',
+// primitive 0, POSITION"; accessorLabel(3, ctx) = "accessor 3 (<ctx>)".
+std::string accessorLabel(int index, const std::string& ctx);
+bool isIntegerComponent(int componentType);
+// Reads accessor `index` as count x `components` doubles (sparse substitution applied).
+std::vector<double> readAccessor(const LoadContext& load, int index, const std::string& ctx, int components,
+                                 size_t* countOut, int* componentTypeOut = nullptr);
+// Reads a VEC3 attribute and rejects NaN or infinite elements.
+std::vector<glm::vec3> readVec3(const LoadContext& load, int accessor, const std::string& ctx);
+
+// Materials and textures (gltf_materials.cpp).
+void convertMaterials(LoadContext& load);
+// The scene material of a primitive's glTF material; -1 adds glTF's default material once.
+uint32_t materialFor(LoadContext& load, int gltfMaterial, const std::string& ctx);
+
+// Primitives (gltf_primitives.cpp): appends the primitive's triangles in world space.
+void addPrimitive(LoadContext& load, int meshIndex, int primIndex, const glm::mat4& worldFromLocal, bool offscreen);
+
+// Lights and cameras (gltf_lights_cameras.cpp), placed by their node's world transform.
+void addLight(LoadContext& load, const tinygltf::Node& node, int nodeIndex, const glm::mat4& worldFromLocal);
+void addCamera(LoadContext& load, const tinygltf::Node& node, int nodeIndex, const glm::mat4& worldFromLocal);
+// Once the scene bounds are known: a far plane for the cameras whose zfar was 0 (infinite).
+void boundInfiniteFarPlanes(LoadContext& load);
+
+// The node hierarchy (gltf_nodes.cpp).
+std::vector<int> rootNodes(const tinygltf::Model& model);
+// Converts node `nodeIndex` and its descendants under the parent's world transform.
+void visitNode(LoadContext& load, int nodeIndex, const glm::mat4& worldFromParent, bool parentOffscreen, size_t depth);
+
+}  // namespace vct::gltf_detail

@@ -1,0 +1,145 @@
+// glTF materials and their textures: base colour and emission (with
+// KHR_materials_emissive_strength), images converted to 8-bit RGBA once per image and
+// wrap mode, and glTF's default material for primitives that name none.
+#include "scene/gltf_detail.h"
+
+#include <cmath>
+#include <cstring>
+
+namespace vct::gltf_detail {
+
+namespace {
+
+// The decoded image as 8-bit RGBA (grey replicated, missing alpha = 255, 16-bit rounded to 8).
+std::vector<uint8_t> rgba8FromImage(const tinygltf::Image& image) {
+    const size_t texels = size_t(image.width) * size_t(image.height);
+    const int comps = image.component;
+    const int bytesPerComp = image.bits == 16 ? 2 : 1;
+    std::vector<uint8_t> rgba(texels * 4);
+    if (comps == 4 && bytesPerComp == 1) {  // what tinygltf's default stb loader produces
+        std::memcpy(rgba.data(), image.image.data(), texels * 4);
+        return rgba;
+    }
+    for (size_t i = 0; i < texels; ++i) {
+        uint8_t c[4] = {0, 0, 0, 255};
+        for (int k = 0; k < comps; ++k) {
+            const unsigned char* p =
+                image.image.data() + (i * size_t(comps) + size_t(k)) * size_t(bytesPerComp);
+            uint32_t v = p[0];
+            if (bytesPerComp == 2) {
+                uint16_t v16;
+                std::memcpy(&v16, p, 2);
+                v = (uint32_t(v16) * 255u + 32767u) / 65535u;
+            }
+            c[k] = uint8_t(v);
+        }
+        uint8_t* o = &rgba[4 * i];
+        if (comps <= 2) {  // grey (+ alpha)
+            o[0] = o[1] = o[2] = c[0];
+            o[3] = comps == 2 ? c[1] : 255;
+        } else {
+            o[0] = c[0];
+            o[1] = c[1];
+            o[2] = c[2];
+            o[3] = comps == 4 ? c[3] : 255;
+        }
+    }
+    return rgba;
+}
+
+// The scene texture of glTF texture `gltfTexture`, converting it on first use.
+int textureFor(LoadContext& load, int gltfTexture, const std::string& ctx) {
+    const tinygltf::Model& model = load.model;
+    const int count = int(model.textures.size());
+    if (gltfTexture < 0 || gltfTexture >= count) load.fail(ctx + ": " + outOfRange("texture", gltfTexture, count));
+    if (load.sceneTextureFromGltf.empty()) load.sceneTextureFromGltf.assign(size_t(count), -1);
+    int& mapped = load.sceneTextureFromGltf[size_t(gltfTexture)];
+    if (mapped >= 0) return mapped;
+
+    const tinygltf::Texture& tex = model.textures[size_t(gltfTexture)];
+    const std::string where = label("texture", gltfTexture, tex.name);
+    bool repeatS = true, repeatT = true;
+    if (tex.sampler >= 0) {
+        if (tex.sampler >= int(model.samplers.size()))
+            load.fail(where + ": " + outOfRange("sampler", tex.sampler, model.samplers.size()));
+        const tinygltf::Sampler& s = model.samplers[size_t(tex.sampler)];
+        // MIRRORED_REPEAT is read as REPEAT: the Texture struct has no mirror mode.
+        repeatS = s.wrapS != TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+        repeatT = s.wrapT != TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+    }
+    // Many glTF textures often share one image (Lost Empire: 45 textures, one atlas): convert it once.
+    const auto shared = load.sceneTextureFromImage.find({tex.source, repeatS, repeatT});
+    if (shared != load.sceneTextureFromImage.end()) return mapped = shared->second;
+    const int imageCount = int(model.images.size());
+    if (tex.source < 0 || tex.source >= imageCount)
+        load.fail(where + ": " + outOfRange("image", tex.source, imageCount));
+    const tinygltf::Image& image = model.images[size_t(tex.source)];
+    const std::string imageWhere = label("image", tex.source, image.name.empty() ? image.uri : image.name);
+    const int comps = image.component;
+    const int bytesPerComp = image.bits == 16 ? 2 : 1;
+    if (image.width <= 0 || image.height <= 0 || comps < 1 || comps > 4 || (image.bits != 8 && image.bits != 16) ||
+        image.image.size() < size_t(image.width) * size_t(image.height) * size_t(comps * bytesPerComp))
+        load.fail(imageWhere + ": not decoded (missing file or unsupported format)");
+
+    Texture out;
+    out.name = image.name.empty() ? (image.uri.empty() ? tex.name : image.uri) : image.name;
+    out.width = image.width;
+    out.height = image.height;
+    out.rgba = rgba8FromImage(image);
+    out.repeatS = repeatS;
+    out.repeatT = repeatT;
+    mapped = int(load.scene.textures.size());
+    load.sceneTextureFromImage[{tex.source, repeatS, repeatT}] = mapped;
+    load.scene.textures.push_back(std::move(out));
+    return mapped;
+}
+
+}  // namespace
+
+void convertMaterials(LoadContext& load) {
+    const tinygltf::Model& model = load.model;
+    for (size_t i = 0; i < model.materials.size(); ++i) {
+        const tinygltf::Material& m = model.materials[i];
+        const std::string where = label("material", int(i), m.name);
+        Material out;
+        out.name = m.name.empty() ? "material" + std::to_string(i) : m.name;
+        const std::vector<double>& bc = m.pbrMetallicRoughness.baseColorFactor;
+        if (bc.size() == 4) out.baseColorFactor = glm::vec4(float(bc[0]), float(bc[1]), float(bc[2]), float(bc[3]));
+        if (m.emissiveFactor.size() == 3)
+            out.emissiveFactor =
+                glm::vec3(float(m.emissiveFactor[0]), float(m.emissiveFactor[1]), float(m.emissiveFactor[2]));
+        auto strength = m.extensions.find("KHR_materials_emissive_strength");
+        if (strength != m.extensions.end() && strength->second.IsObject() && strength->second.Has("emissiveStrength"))
+            out.emissiveFactor *= float(strength->second.Get("emissiveStrength").GetNumberAsDouble());
+        const glm::vec4 bcf = out.baseColorFactor;
+        if (!finite3(glm::vec3(bcf)) || !std::isfinite(bcf.w) || !finite3(out.emissiveFactor))
+            load.fail(where + ": base colour or emissive factor is not finite");
+        if (glm::any(glm::lessThan(out.emissiveFactor, glm::vec3(0.f))))
+            load.fail(where + ": negative emissive factor " + str3(out.emissiveFactor));
+        if (m.pbrMetallicRoughness.baseColorTexture.index >= 0)
+            out.baseColorTexture =
+                textureFor(load, m.pbrMetallicRoughness.baseColorTexture.index, where + " base colour");
+        if (m.emissiveTexture.index >= 0)
+            out.emissiveTexture = textureFor(load, m.emissiveTexture.index, where + " emissive");
+        out.doubleSided = m.doubleSided;
+        out.alphaMask = m.alphaMode == "MASK";
+        out.alphaCutoff = float(m.alphaCutoff);
+        if (!std::isfinite(out.alphaCutoff)) load.fail(where + ": alphaCutoff is not finite");
+        load.scene.materials.push_back(std::move(out));
+    }
+}
+
+uint32_t materialFor(LoadContext& load, int gltfMaterial, const std::string& ctx) {
+    if (gltfMaterial >= int(load.model.materials.size()))
+        load.fail(ctx + ": " + outOfRange("material", gltfMaterial, load.model.materials.size()));
+    if (gltfMaterial >= 0) return uint32_t(gltfMaterial);
+    if (load.defaultMaterial < 0) {  // glTF's default material: white, single-sided
+        load.defaultMaterial = int(load.scene.materials.size());
+        Material m;
+        m.name = "default";
+        load.scene.materials.push_back(m);
+    }
+    return uint32_t(load.defaultMaterial);
+}
+
+}  // namespace vct::gltf_detail
