@@ -1,5 +1,5 @@
-// Marching one cone through a clipmap (src/clipmap): the dense path's march (cone_march.glsl,
-// BRIEF section 3) with the level of detail also bounded below by the sample's position: a
+// A clipmap (src/clipmap) as cone_marchVolume (cone_march_shared.h) reads it: the dense
+// path's march with the level of detail also bounded below by the sample's position: a
 // sample uses the finest level whose box holds it with a margin, and near that box's border
 // its level of detail rises continuously to the next level (no seam). Level l at mip f stands
 // for a dense grid's mip l + f; levels nest (clipmap_nest.glsl), so the switch from level l
@@ -69,40 +69,25 @@ vec4 clip_sample(vec3 x0, float lod) {
     return clip_fetch(level, clip_levelCoords(level, x0) / cm.info.y, mip);
 }
 
-// cone_march (cone_common.glsl) through the clipmap, in level-0 voxel units.
-ConeResult cone_march(vec3 origin, vec3 d, float h0, float rise, float maxDist, float falloff) {
-    float beta = u.march.y;
-    float maxAlpha = u.march.w;
-    int n = int(cm.info.x);
-    float maxLod = float(n - 1) + cm.info.z - 1.0;
-    float res = cm.info.y;
-    float coarseScale = cm.levelFromLevel0[n - 1].w;
-
-    ConeResult r;
-    r.radiance = vec3(0.0);
-    r.alpha = 0.0;
-    float t = 0.0;
-    for (int i = 0; i < CONE_MAX_STEPS; ++i) {
-        if (t >= maxDist || r.alpha >= maxAlpha) break;
-        float lod = cone_footprintLod(t, h0, rise);
-        lod = min(max(lod, clip_positionLod(origin + d * t)), maxLod);
-        float dt = min(beta * exp2(lod), maxDist - t);
-        vec3 p = origin + d * (t + 0.5 * dt);
-        // The sample point may sit slightly further out than the step's start.
-        lod = min(max(lod, clip_positionLod(p)), maxLod);
-        float texel = exp2(lod);
-
-        // Leave once the footprint is outside the coarsest level and moving away.
-        vec3 pc = clip_levelCoords(n - 1, p);
-        float reach = 1.5 * texel * coarseScale;
-        if (cone_leaving(pc, d, vec3(res), reach)) break;
-
-        cone_composite(r, clip_sample(p, lod), dt, texel, t + 0.5 * dt, falloff);
-        t += dt;
-    }
-    cone_close(r, maxAlpha);
-    return r;
+// The volume of cone_marchVolume, in level-0 voxel units: no level of detail finer than the
+// position's own or coarser than the coarsest level's last mip, the coarsest level's box, and
+// no facing rule.
+float cone_volumeLod(float lod, vec3 x0) {
+    float maxLod = float(int(cm.info.x) - 1) + cm.info.z - 1.0;
+    return min(max(lod, clip_positionLod(x0)), maxLod);
 }
+
+// Leaves once the footprint is outside the coarsest level and moving away.
+bool cone_volumeLeaving(vec3 p, vec3 d, float texel) {
+    int n = int(cm.info.x);
+    vec3 pc = clip_levelCoords(n - 1, p);
+    float reach = 1.5 * texel * cm.levelFromLevel0[n - 1].w;
+    return cone_leaving(pc, d, vec3(cm.info.y), reach);
+}
+
+vec4 cone_volumeSample(vec3 p, vec3 d, float lod) { return clip_sample(p, lod); }
+
+float cone_volumeFacing(vec3 p, vec3 d, float lod, vec4 s) { return 1.0; }
 
 // As cone_gather (cone_march.glsl). The start offset is in voxels of the level the surface
 // point itself falls in (continuously across the blend bands), so a point near a level

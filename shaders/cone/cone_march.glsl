@@ -1,6 +1,5 @@
-// Marching one cone through the voxel grid (Crassin et al. 2011, with the rules of BRIEF
-// section 3). Everything here works in voxel units (world / voxelSize, origin at the grid's
-// min corner), so the marching constants do not depend on the scene's scale.
+// The dense voxel grid as cone_marchVolume (cone_march_shared.h) reads it: 3D textures with
+// mips, in voxel units (world / voxelSize, origin at the grid's min corner).
 //
 // Defines: CONE_GI (1: premultiplied radiance + alpha from grid.radiance; 0: alpha only from
 // grid.opacity), CONE_ANISO (1: blend the six directional textures above level 0).
@@ -65,36 +64,22 @@ float cone_facing(vec3 p, vec3 d, float lod) {
 }
 #endif
 
-// cone_march (cone_common.glsl) through the dense grid.
-ConeResult cone_march(vec3 origin, vec3 d, float h0, float rise, float maxDist, float falloff) {
-    float beta = u.march.y;
-    float maxAlpha = u.march.w;
-    float maxLod = u.gridResolution.w - 1.0;
-    vec3 res = u.gridResolution.xyz;
+// The volume of cone_marchVolume: the grid's mips up to the coarsest, its box, and (GI) the
+// facing rule.
+float cone_volumeLod(float lod, vec3 x) { return min(lod, u.gridResolution.w - 1.0); }
 
-    ConeResult r;
-    r.radiance = vec3(0.0);
-    r.alpha = 0.0;
-    float t = 0.0;
-    for (int i = 0; i < CONE_MAX_STEPS; ++i) {
-        if (t >= maxDist || r.alpha >= maxAlpha) break;
-        float lod = cone_footprintLod(t, h0, rise);
-        lod = min(lod, maxLod);
-        float texel = exp2(lod);
-        float dt = min(beta * texel, maxDist - t);
-        vec3 p = origin + d * (t + 0.5 * dt);
+bool cone_volumeLeaving(vec3 p, vec3 d, float texel) {
+    return cone_leaving(p, d, u.gridResolution.xyz, 1.5 * texel);
+}
 
-        if (cone_leaving(p, d, res, 1.5 * texel)) break;
+vec4 cone_volumeSample(vec3 p, vec3 d, float lod) { return cone_sampleGrid(p, d, lod); }
 
-        vec4 s = cone_sampleGrid(p, d, lod);
+float cone_volumeFacing(vec3 p, vec3 d, float lod, vec4 s) {
 #if CONE_GI
-        s.rgb *= cone_facing(p, d, lod);
+    return cone_facing(p, d, lod);
+#else
+    return 1.0;
 #endif
-        cone_composite(r, s, dt, texel, t + 0.5 * dt, falloff);
-        t += dt;
-    }
-    cone_close(r, maxAlpha);
-    return r;
 }
 
 ConeGather cone_gather(vec3 pWorld, vec3 n, vec3 ng, float maxDist, float falloff, float sky) {

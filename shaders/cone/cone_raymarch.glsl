@@ -2,6 +2,7 @@
 // compositing one channel front to back at a fixed mip level. rgb = composited colour,
 // a = accumulated opacity. Defines: CONE_VIEW_RADIANCE or CONE_VIEW_ALBEDO (else opacity).
 #include "cone/cone_shared.h"
+#include "cone/cone_composite.h"
 
 layout(local_size_x = CONE_LOCAL_SIZE, local_size_y = CONE_LOCAL_SIZE) in;
 layout(rgba32f, binding = CONE_IMAGE_OUTPUT) uniform writeonly image2D cone_viewOut;
@@ -41,20 +42,16 @@ void main() {
     float tNear = max(max(max(tmin.x, tmin.y), tmin.z), 0.0);
     float tFar = min(min(tmax.x, tmax.y), tmax.z);
 
-    vec4 acc = vec4(0.0);
+    ConeResult acc;
+    acc.radiance = vec3(0.0);
+    acc.alpha = 0.0;
     float lod = float(u.config.z);
     float dt = u.camera.z;
-    float k = dt / exp2(lod);
+    float texel = exp2(lod);
     if (tNear < tFar && !isnan(tNear) && !isnan(tFar)) {
         float t = tNear + 0.5 * dt;
-        for (int i = 0; i < 4 * CONE_MAX_STEPS && t < tFar && acc.a < 0.999; ++i, t += dt) {
-            vec4 s = cone_viewSample((eye + d * t) / res, lod);
-            float a = clamp(s.a, 0.0, 1.0);
-            float aStep = 1.0 - exp2(k * log2(max(1.0 - a, 1e-7)));
-            vec3 c = a > 1e-6 ? s.rgb * (aStep / a) : s.rgb * k;
-            acc.rgb += (1.0 - acc.a) * c;
-            acc.a += (1.0 - acc.a) * aStep;
-        }
+        for (int i = 0; i < 4 * CONE_MAX_STEPS && t < tFar && acc.alpha < 0.999; ++i, t += dt)
+            cone_composite(acc, cone_viewSample((eye + d * t) / res, lod), dt, texel, t, 0.0);  // no falloff
     }
-    imageStore(cone_viewOut, pix, acc);
+    imageStore(cone_viewOut, pix, vec4(acc.radiance, acc.alpha));
 }

@@ -40,6 +40,8 @@ ProgramKey coneCountProgramKey(bool gi, bool aniso) {
 
 ProgramKey fetchBenchProgramKey() { return computeProgramKey("bench/fetch.glsl"); }
 
+ProgramKey coneMarchCheckProgramKey() { return computeProgramKey("cone/cone_march_check.glsl"); }
+
 std::vector<ProgramKey> coneProgramVariants() {
     std::vector<ProgramKey> v;
     for (bool gi : {false, true}) {
@@ -55,6 +57,7 @@ std::vector<ProgramKey> coneProgramVariants() {
     for (int c : {gpu::CONE_CHANNEL_OPACITY, gpu::CONE_CHANNEL_ALBEDO, gpu::CONE_CHANNEL_RADIANCE})
         v.push_back(voxelViewProgramKey(c));
     v.push_back(fetchBenchProgramKey());
+    v.push_back(coneMarchCheckProgramKey());
     return v;
 }
 

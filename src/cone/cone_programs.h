@@ -19,6 +19,9 @@ ProgramKey voxelViewProgramKey(int channel);
 // bench/: the cone pass with a fetch counter, and the bare trilinear-fetch shader.
 ProgramKey coneCountProgramKey(bool gi, bool aniso);
 ProgramKey fetchBenchProgramKey();
+// cone_march_check.glsl: the shared march's functions on a buffer of inputs (the test that
+// holds the CPU tracer's march to the shaders').
+ProgramKey coneMarchCheckProgramKey();
 
 // Every variant the functions above can return.
 std::vector<ProgramKey> coneProgramVariants();

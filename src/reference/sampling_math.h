@@ -1,6 +1,8 @@
 // Warps from [0,1)^2 to the directions and points the reference renderers sample.
 #pragma once
 
+#include "common/tangent_frame.h"
+
 #include <glm/glm.hpp>
 
 #include <cmath>
@@ -42,19 +44,14 @@ inline glm::vec3 sampleUniformTriangle(glm::vec2 u) {
     return {b0, b1, 1.f - b0 - b1};
 }
 
-// Orthonormal basis around a unit vector (Duff et al. 2017, branchless).
+// Orthonormal basis around a unit vector: the cone passes' frame (common/tangent_frame.h),
+// with the sign of n.z taken from its sign bit as the reference always has.
 struct Frame {
     glm::vec3 x, y, z;
 
     static Frame fromZ(const glm::vec3& n) {
-        float sign = std::copysign(1.f, n.z);
-        float a = -1.f / (sign + n.z);
-        float b = n.x * n.y * a;
-        Frame f;
-        f.x = {1.f + sign * n.x * n.x * a, sign * b, -sign * n.x};
-        f.y = {b, sign + n.y * n.y * a, -n.y};
-        f.z = n;
-        return f;
+        const glm::mat3 m = gpu::frame_fromZWithSign(n, std::copysign(1.f, n.z));
+        return {m[0], m[1], m[2]};
     }
     glm::vec3 toWorld(const glm::vec3& v) const { return v.x * x + v.y * y + v.z * z; }
 };

@@ -1,9 +1,11 @@
-// The CPU cone marcher: shaders/cone/cone_march.glsl line for line (cone_march, cone_gather,
-// cone_surface), over the sparse levels instead of 3D textures.
+// The CPU cone tracer: the shaders' march itself (cone/cone_march_shared.h) and tangent frame
+// (common/tangent_frame.h) over the sparse levels instead of 3D textures, with
+// shaders/cone/cone_common.glsl's gather and surface test.
 #include "vdb/sparse_cone.h"
 
+#include "common/tangent_frame.h"
+#include "cone/cone_march_shared.h"
 #include "cone/cone_set.h"
-#include "cone/cone_shared.h"
 
 #include <openvdb/tools/Interpolation.h>
 #include <tbb/blocked_range.h>
@@ -21,12 +23,13 @@ using OpacityAcc = openvdb::tree::ValueAccessor<const openvdb::FloatTree, false>
 using RadianceAcc = openvdb::tree::ValueAccessor<const openvdb::Vec3STree, false>;
 
 struct MarchParams {
-    float tanHalf, beta, offset, maxAlpha, planeRatio, maxLod;
+    gpu::ConeMarch march;
+    float offset, maxLod;
     glm::vec3 res;
     std::vector<glm::vec3> levelScale;  // level texel coordinates per voxel unit: size_k / res
 };
 
-// One thread's view of the levels.
+// One thread's view of the levels: the volume of gpu::cone_marchVolume.
 struct LevelSampler {
     const MarchParams* mp;
     std::vector<std::unique_ptr<OpacityAcc>> opacity;
@@ -68,77 +71,30 @@ struct LevelSampler {
         return glm::vec4(c[0], c[1], c[2], a);
     }
 
-    // textureLod: premultiplied radiance (GI) and opacity at footprint 2^lod.
-    glm::vec4 sample(const glm::vec3& p, float lod) {
+    // The levels up to the coarsest.
+    float lod(float footprintLod, const glm::vec3&) const { return std::min(footprintLod, mp->maxLod); }
+
+    // The levels' box [0, res].
+    bool leaving(const glm::vec3& p, const glm::vec3& d, float texel) const {
+        return gpu::cone_leaving(p, d, mp->res, 1.5f * texel);
+    }
+
+    // textureLod: premultiplied radiance (GI) and opacity at footprint 2^lod (isotropic: d unused).
+    glm::vec4 sample(const glm::vec3& p, const glm::vec3&, float lod) {
         return acrossLevels(lod, [&](int level) { return sampleLevel(p, level); });
     }
 
-    // cone_facing: vox_facingWeight of the occupied voxels' mean normal at the sample's level,
-    // the filtered normal over the filtered coverage (`coverage`: the opacity sample).
-    float facing(const glm::vec3& p, const glm::vec3& d, float lod, float coverage) {
+    // GI: cone_facing, vox_facingWeight of the occupied voxels' mean normal at the sample's
+    // level, the filtered normal over the filtered coverage (the sample's opacity). AO: 1.
+    float facing(const glm::vec3& p, const glm::vec3& d, float lod, const glm::vec4& s) {
+        if (radiance.empty()) return 1.f;
         const glm::vec3 n = acrossLevels(lod, [&](int level) {
             const openvdb::Vec3s v = openvdb::tools::BoxSampler::sample(*normal[size_t(level)], levelCoord(p, level));
             return glm::vec3(v[0], v[1], v[2]);
         });
-        return gpu::vox_facingWeight(n / std::max(coverage, 1e-4f), d);
+        return gpu::vox_facingWeight(n / std::max(s.a, 1e-4f), d);
     }
 };
-
-struct ConeResult {
-    glm::vec3 radiance{0.f};
-    float alpha = 0.f;
-};
-
-// cone_march: origin in voxel units, unit d; h0/rise for the plane limit.
-ConeResult march(LevelSampler& sampler, const glm::vec3& origin, const glm::vec3& d, float h0, float rise,
-                 float maxDist, float falloff) {
-    const MarchParams& mp = *sampler.mp;
-    ConeResult r;
-    float t = 0.f;
-    for (int i = 0; i < gpu::CONE_MAX_STEPS; ++i) {
-        if (t >= maxDist || r.alpha >= mp.maxAlpha) break;
-        float lod = std::log2(std::max(1.f, 2.f * t * mp.tanHalf));
-        if (mp.planeRatio > 0.f) {
-            const float h = h0 + t * rise;
-            lod = std::min(lod, std::floor(std::log2(std::max(1.f, h / mp.planeRatio))));
-        }
-        lod = std::min(lod, mp.maxLod);
-        const float texel = std::exp2(lod);
-        const float dt = std::min(mp.beta * texel, maxDist - t);
-        const glm::vec3 p = origin + d * (t + 0.5f * dt);
-
-        const float reach = 1.5f * texel;
-        bool leaving = false;
-        for (int a = 0; a < 3; ++a)
-            leaving = leaving || (p[a] < -reach && d[a] <= 0.f) || (p[a] > mp.res[a] + reach && d[a] >= 0.f);
-        if (leaving) break;
-
-        glm::vec4 s = sampler.sample(p, lod);
-        if (!sampler.radiance.empty()) s = glm::vec4(glm::vec3(s) * sampler.facing(p, d, lod, s.a), s.a);
-        const float a = std::clamp(s.a, 0.f, 1.f);
-        const float k = dt / texel;
-        const float aStep = 1.f - std::exp2(k * std::log2(std::max(1.f - a, 1e-7f)));
-        const glm::vec3 c = a > 1e-6f ? glm::vec3(s) * (aStep / a) : glm::vec3(s) * k;
-        const float w = falloff > 0.f ? 1.f / (1.f + falloff * (t + 0.5f * dt)) : 1.f;
-        r.radiance += (1.f - r.alpha) * c;
-        r.alpha += (1.f - r.alpha) * aStep * w;
-        t += dt;
-    }
-    if (r.alpha >= mp.maxAlpha) {
-        r.radiance /= r.alpha;
-        r.alpha = 1.f;
-    }
-    return r;
-}
-
-// cone_frame (Duff et al. 2017): columns t, b, n.
-void coneFrame(const glm::vec3& n, glm::vec3& t, glm::vec3& b) {
-    const float s = n.z >= 0.f ? 1.f : -1.f;
-    const float a = -1.f / (s + n.z);
-    const float bb = n.x * n.y * a;
-    t = glm::vec3(1.f + s * n.x * n.x * a, s * bb, -s * n.x);
-    b = glm::vec3(bb, s + n.y * n.y * a, -n.y);
-}
 
 bool finite3(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -161,19 +117,19 @@ Gather gather(LevelSampler& sampler, const SparseVoxelScene& v, const std::vecto
               const glm::vec3& pWorld, const glm::vec3& n, const glm::vec3& ng, float maxDist, float falloff,
               float sky) {
     const glm::vec3 p = glm::vec3(v.voxelFromWorld * glm::vec4(pWorld, 1.f));
-    glm::vec3 t, b;
-    coneFrame(n, t, b);
+    const glm::mat3 frame = gpu::frame_fromZ(n);
     const float offset = sampler.mp->offset;
     const glm::vec3 origin = p + ng * offset;
     Gather g;
     for (const glm::vec4& cone : cones) {
-        const glm::vec3 d = glm::normalize(t * cone.x + b * cone.y + n * cone.z);
+        const glm::vec3 d = glm::normalize(frame * glm::vec3(cone));
         const float rise = glm::dot(d, ng);
         if (rise <= 0.f) {
             g.occlusion += cone.w;
             continue;
         }
-        const ConeResult r = march(sampler, origin, d, offset, rise, maxDist, falloff);
+        const gpu::ConeResult r =
+            gpu::cone_marchVolume(sampler, sampler.mp->march, origin, d, offset, rise, maxDist, falloff);
         g.radiance += cone.w * (r.radiance + (1.f - r.alpha) * sky);
         g.occlusion += cone.w * r.alpha;
     }
@@ -182,11 +138,11 @@ Gather gather(LevelSampler& sampler, const SparseVoxelScene& v, const std::vecto
 
 MarchParams marchParams(const SparseVoxelScene& v, const ConeSettings& s) {
     MarchParams mp;
-    mp.tanHalf = std::tan(0.5f * s.apertureDeg * float(M_PI) / 180.f);
-    mp.beta = s.stepFactor;
+    mp.march.tanHalfAperture = std::tan(0.5f * s.apertureDeg * float(M_PI) / 180.f);
+    mp.march.stepFactor = s.stepFactor;
+    mp.march.maxAlpha = s.maxAlpha;
+    mp.march.planeRatio = s.planeLimit ? gpu::CONE_PLANE_LIMIT_RATIO : 0.f;
     mp.offset = s.offsetVoxels;
-    mp.maxAlpha = s.maxAlpha;
-    mp.planeRatio = s.planeLimit ? gpu::CONE_PLANE_LIMIT_RATIO : 0.f;
     mp.maxLod = float(int(v.opacityLevels.size()) - 1);
     mp.res = glm::vec3(v.resolution);
     for (int k = 0; k < int(v.opacityLevels.size()); ++k)

@@ -1,9 +1,9 @@
 // CPU voxel cone tracing over the sparse voxels (vdb/sparse_voxels.h): the same cone sets
-// (cone/cone_set.h), aperture, step, offset, max-alpha, opacity step correction, plane limit and
-// AO mapping as shaders/cone/cone_march.glsl, with the GL sampling reproduced on the VDB trees:
-// trilinear within a level (tools::BoxSampler at the GL texel centres of that level, zero
-// outside the occupied set) and linear between the two levels around the fractional level
-// (quadrilinear), the level clamped to [0, levels - 1]. Isotropic levels only: the
+// (cone/cone_set.h), settings and AO mapping as the GPU passes, and their march itself
+// (shaders/cone/cone_march_shared.h, compiled as C++), with the GL sampling reproduced on the
+// VDB trees: trilinear within a level (tools::BoxSampler at the GL texel centres of that
+// level, zero outside the occupied set) and linear between the two levels around the
+// fractional level (quadrilinear), the level clamped to [0, levels - 1]. Isotropic levels only: the
 // ConeSettings::anisotropic flag is ignored (the GPU path must run with vct.aniso=0 to compute
 // the same thing). TBB over points; the result does not depend on the thread count.
 #pragma once

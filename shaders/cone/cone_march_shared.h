@@ -1,0 +1,111 @@
+// Marching one cone through a voxel volume (Crassin et al. 2011, with the rules of BRIEF
+// section 3), written once for C++ and GLSL: the dense grid (cone_march.glsl), the clipmap
+// (clipmap_march.glsl) and the sparse CPU tracer (src/vdb/sparse_cone.cpp) run this text, so
+// the CPU tests exercise the shaders' code. Samples composite front to back with
+// cone_composite.h. Everything works in voxel units of the volume's finest level, so the
+// marching constants do not depend on the scene's scale.
+//
+// The volume is what differs. cone_marchVolume reads it through four calls:
+//   lod(lod, x)            the level of detail the volume uses at x for footprint level lod
+//                          (its coarsest level bounds it; a clipmap's levels bound it below)
+//   leaving(p, d, texel)   true once a sample of edge `texel` at p, moving along d, can only
+//                          see the zero border (cone_leaving in the volume's own coordinates)
+//   sample(p, d, lod)      premultiplied (radiance, alpha) at p, footprint 2^lod voxels
+//   facing(p, d, lod, s)   the weight of sample s's radiance for a cone along d (GI's facing
+//                          rule; 1 where the volume has none)
+// In C++ the volume is an object with these member functions (cone_marchVolume is a
+// template); in GLSL they are the functions cone_volumeLod, cone_volumeLeaving,
+// cone_volumeSample and cone_volumeFacing, declared below and defined by the includer.
+// A shared caller of the march takes the volume as CONE_VOLUME_PARAM and passes it on as
+// CONE_VOLUME_ARG (both empty in GLSL).
+//
+// Float literals carry `f` so C++ computes in float as GLSL does, and the operations keep
+// the order the shaders have always had: reordering would change the rounding, and the
+// dense images are checked bit for bit.
+#pragma once
+#include "cone/cone_composite.h"
+#include "cone/cone_shared.h"
+
+#ifdef __cplusplus
+#define CONE_VOLUME_TEMPLATE template <class ConeVolume>
+#define CONE_VOLUME_PARAM ConeVolume& volume,
+#define CONE_VOLUME_ARG volume,
+#define CONE_VOLUME_LOD(l, x) volume.lod(l, x)
+#define CONE_VOLUME_LEAVING(p, d, texel) volume.leaving(p, d, texel)
+#define CONE_VOLUME_SAMPLE(p, d, l) volume.sample(p, d, l)
+#define CONE_VOLUME_FACING(p, d, l, s) volume.facing(p, d, l, s)
+#else
+#define CONE_VOLUME_TEMPLATE
+#define CONE_VOLUME_PARAM
+#define CONE_VOLUME_ARG
+#define CONE_VOLUME_LOD(l, x) cone_volumeLod(l, x)
+#define CONE_VOLUME_LEAVING(p, d, texel) cone_volumeLeaving(p, d, texel)
+#define CONE_VOLUME_SAMPLE(p, d, l) cone_volumeSample(p, d, l)
+#define CONE_VOLUME_FACING(p, d, l, s) cone_volumeFacing(p, d, l, s)
+float cone_volumeLod(float lod, vec3 x);
+bool cone_volumeLeaving(vec3 p, vec3 d, float texel);
+vec4 cone_volumeSample(vec3 p, vec3 d, float lod);
+float cone_volumeFacing(vec3 p, vec3 d, float lod, vec4 s);
+#endif
+
+VCT_BEGIN_NAMESPACE
+
+// The settings a march reads besides its volume (ConeUniforms::march and ::limits).
+struct ConeMarch {
+    float tanHalfAperture;  // tan(aperture / 2)
+    float stepFactor;       // beta: each step is beta footprints long
+    float maxAlpha;         // the cone closes at this opacity (cone_close)
+    float planeRatio;       // plane limit: texels of at most h / ratio voxels at height h; 0 = off
+};
+
+// The footprint's level of detail at distance t: diameter 2 t tan(aperture / 2), at least one
+// voxel; with the plane limit, whole levels of at most h / ratio voxels at height h = h0 +
+// t rise above the tangent plane (a fractional level would blend in the next, coarser one).
+CONE_FN float cone_footprintLod(ConeMarch m, float t, float h0, float rise) {
+    float lod = log2(max(1.0f, 2.0f * t * m.tanHalfAperture));
+    if (m.planeRatio > 0.0f) lod = min(lod, floor(log2(max(1.0f, (h0 + t * rise) / m.planeRatio))));
+    return lod;
+}
+
+// True once the footprint at p (volume coordinates, box [0, size]; one texel of trilinear
+// reach past half a texel: `reach`) is outside the volume and moving away along d: the zero
+// border means only sky remains.
+CONE_FN bool cone_leaving(vec3 p, vec3 d, vec3 size, float reach) {
+    bvec3 below = lessThan(p, vec3(-reach));
+    bvec3 above = greaterThan(p, size + reach);
+    return any(bvec3(below.x && d.x <= 0.0f, below.y && d.y <= 0.0f, below.z && d.z <= 0.0f)) ||
+           any(bvec3(above.x && d.x >= 0.0f, above.y && d.y >= 0.0f, above.z && d.z >= 0.0f));
+}
+
+// Marches from `origin` (voxel units) along unit `d`. `h0` is the origin's height above the
+// shading point's tangent plane and `rise` = dot(d, geometric normal), both for the plane
+// limit; `maxDist` (voxels) limits the distance (R for AO); `falloff` is lambda (AO only).
+// The step's length follows the footprint at its start; the sample sits at its middle,
+// where the volume may ask for a coarser level (a clipmap near a level's border).
+CONE_VOLUME_TEMPLATE
+CONE_FN ConeResult cone_marchVolume(CONE_VOLUME_PARAM ConeMarch m, vec3 origin, vec3 d, float h0, float rise,
+                                    float maxDist, float falloff) {
+    ConeResult r;
+    r.radiance = vec3(0.0f);
+    r.alpha = 0.0f;
+    float t = 0.0f;
+    for (int i = 0; i < CONE_MAX_STEPS; ++i) {
+        if (t >= maxDist || r.alpha >= m.maxAlpha) break;
+        float lod = CONE_VOLUME_LOD(cone_footprintLod(m, t, h0, rise), origin + d * t);
+        float dt = min(m.stepFactor * exp2(lod), maxDist - t);
+        vec3 p = origin + d * (t + 0.5f * dt);
+        lod = CONE_VOLUME_LOD(lod, p);
+        float texel = exp2(lod);
+
+        if (CONE_VOLUME_LEAVING(p, d, texel)) break;
+
+        vec4 s = CONE_VOLUME_SAMPLE(p, d, lod);
+        s = vec4(vec3(s) * CONE_VOLUME_FACING(p, d, lod, s), s.a);
+        cone_composite(r, s, dt, texel, t + 0.5f * dt, falloff);
+        t += dt;
+    }
+    cone_close(r, m.maxAlpha);
+    return r;
+}
+
+VCT_END_NAMESPACE

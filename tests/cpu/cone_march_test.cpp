@@ -1,0 +1,97 @@
+// The shared cone march (shaders/cone/cone_march_shared.h) and tangent frame
+// (shaders/common/tangent_frame.h) against closed forms, on the CPU: a uniform medium at
+// level 0 composites to 1 - (1 - alpha)^L, a saturated cone closes to the medium's colour,
+// the footprint and plane limit give the levels they state, the leaving test, and the frame.
+// tests/gpu/cone_march_shared_test.cpp holds the shaders to the same text.
+#include "common/tangent_frame.h"
+#include "cone/cone_march_shared.h"
+#include "reference/sampling_math.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace vct {
+namespace {
+
+// A uniform medium of opacity `alpha` per voxel and colour `colour`, at level 0 everywhere
+// and without a border.
+struct UniformMedium {
+    float alpha;
+    glm::vec3 colour;
+    float lod(float, glm::vec3) const { return 0.f; }
+    bool leaving(glm::vec3, glm::vec3, float) const { return false; }
+    glm::vec4 sample(glm::vec3, glm::vec3, float) const { return glm::vec4(colour * alpha, alpha); }
+    float facing(glm::vec3, glm::vec3, float, glm::vec4) const { return 1.f; }
+};
+
+gpu::ConeMarch march(float maxAlpha) { return {0.1f, 0.5f, maxAlpha, 0.f}; }
+
+TEST(ConeMarch, UniformMediumCompositesToItsTransmittance) {
+    UniformMedium medium{0.2f, {0.5f, 0.25f, 1.f}};
+    const glm::vec3 d(0.f, 0.f, 1.f);
+    for (float length : {1.f, 3.5f, 10.f}) {
+        // Steps of beta = 0.5 voxels, each corrected to (1 - alpha)^0.5: the whole length
+        // transmits (1 - alpha)^L, and the premultiplied radiance keeps the colour's ratio.
+        const gpu::ConeResult r = gpu::cone_marchVolume(medium, march(1.f), glm::vec3(0.f), d, 1.5f, 1.f, length, 0.f);
+        const float expected = 1.f - std::pow(1.f - medium.alpha, length);
+        EXPECT_NEAR(r.alpha, expected, 1e-5f) << "length " << length;
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(r.radiance[k], medium.colour[k] * expected, 1e-5f);
+    }
+}
+
+TEST(ConeMarch, SaturatedConeClosesToTheMediumsColour) {
+    UniformMedium medium{0.3f, {0.5f, 0.25f, 1.f}};
+    const gpu::ConeResult r =
+        gpu::cone_marchVolume(medium, march(0.9f), glm::vec3(0.f), glm::vec3(1.f, 0.f, 0.f), 1.5f, 1.f, 100.f, 0.f);
+    EXPECT_EQ(r.alpha, 1.f);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(r.radiance[k], medium.colour[k], 1e-6f);
+}
+
+TEST(ConeMarch, FootprintAndPlaneLimitLevels) {
+    const gpu::ConeMarch open{0.5f, 0.5f, 0.99f, 0.f};
+    EXPECT_EQ(gpu::cone_footprintLod(open, 0.5f, 1.5f, 0.f), 0.f) << "at least one voxel";
+    EXPECT_NEAR(gpu::cone_footprintLod(open, 8.f, 1.5f, 0.f), 3.f, 1e-6f) << "diameter 2 t tan = 8 voxels";
+    // Plane limit: whole levels of at most h / 1.5 voxels, h = h0 + t rise.
+    const gpu::ConeMarch limited{0.5f, 0.5f, 0.99f, 1.5f};
+    EXPECT_EQ(gpu::cone_footprintLod(limited, 8.f, 1.5f, 0.f), 0.f) << "a cone along the plane stays at level 0";
+    EXPECT_EQ(gpu::cone_footprintLod(limited, 8.f, 1.5f, 0.5f), 1.f) << "h = 5.5: texels of 2 voxels";
+    EXPECT_EQ(gpu::cone_footprintLod(limited, 8.f, 1.5f, 1.f), 2.f) << "h = 9.5: texels of 4 voxels";
+    EXPECT_NEAR(gpu::cone_footprintLod(limited, 6.f, 20.f, 1.f), 2.5849625f, 1e-6f) << "the footprint, under the limit";
+}
+
+TEST(ConeMarch, LeavingOnlyOutsideAndMovingAway) {
+    const glm::vec3 size(32.f);
+    EXPECT_FALSE(gpu::cone_leaving({16.f, 16.f, 16.f}, {1.f, 0.f, 0.f}, size, 1.5f));
+    EXPECT_FALSE(gpu::cone_leaving({33.f, 16.f, 16.f}, {1.f, 0.f, 0.f}, size, 1.5f)) << "within the reach";
+    EXPECT_TRUE(gpu::cone_leaving({34.f, 16.f, 16.f}, {1.f, 0.f, 0.f}, size, 1.5f));
+    EXPECT_FALSE(gpu::cone_leaving({34.f, 16.f, 16.f}, {-1.f, 0.f, 0.f}, size, 1.5f)) << "coming back in";
+    EXPECT_TRUE(gpu::cone_leaving({16.f, -2.f, 16.f}, {0.f, 0.f, 1.f}, size, 1.5f)) << "not coming back";
+}
+
+TEST(TangentFrame, OrthonormalAroundTheNormalForBothSigns) {
+    std::mt19937 rng(7);
+    std::normal_distribution<float> g;
+    for (int i = 0; i < 200; ++i) {
+        const glm::vec3 n = glm::normalize(glm::vec3(g(rng), g(rng), g(rng)));
+        for (const glm::mat3& f : {gpu::frame_fromZ(n), gpu::frame_fromZWithSign(n, std::copysign(1.f, n.z))}) {
+            EXPECT_EQ(f[2], n);
+            EXPECT_NEAR(glm::dot(f[0], f[1]), 0.f, 1e-6f);
+            EXPECT_NEAR(glm::dot(f[0], n), 0.f, 1e-6f);
+            EXPECT_NEAR(glm::dot(f[1], n), 0.f, 1e-6f);
+            EXPECT_NEAR(glm::length(f[0]), 1.f, 1e-6f);
+            EXPECT_NEAR(glm::length(f[1]), 1.f, 1e-6f);
+            EXPECT_NEAR(glm::dot(glm::cross(f[0], f[1]), n), 1.f, 1e-6f) << "right-handed";
+        }
+    }
+    // At n.z = -0 the cone passes (+1) and the reference (the sign bit) take opposite halves.
+    const glm::vec3 n(1.f, 0.f, -0.f);
+    const glm::mat3 cone = gpu::frame_fromZ(n);
+    const Frame reference = Frame::fromZ(n);
+    EXPECT_EQ(cone[0], -reference.x);
+    EXPECT_EQ(cone[1], -reference.y);
+}
+
+}  // namespace
+}  // namespace vct
