@@ -33,7 +33,6 @@ std::string str3(const glm::vec3& v) {
     return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + ")";
 }
 
-bool finite3(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // The loader rejects non-finite files; a Scene built in code reaches the GPU without it, and
 // one NaN vertex poisons voxel averages and Embree's BVH. Refuse it here, naming the element.

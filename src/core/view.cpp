@@ -25,7 +25,6 @@ View makeView(const Camera& camera, int width, int height) {
     // A camera built in code skips the loader's checks: a NaN eye or znear 0 would rasterize
     // garbage (or nothing) without a word.
     const std::string where = "camera '" + camera.name + "'";
-    auto finite3 = [](const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); };
     if (!finite3(camera.eye) || !finite3(camera.target) || !finite3(camera.up))
         throw std::invalid_argument(where + ": eye, target or up is not finite");
     if (!(glm::length(camera.target - camera.eye) > 0.f))

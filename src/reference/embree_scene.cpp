@@ -1,7 +1,7 @@
 #include "reference/embree_scene.h"
 
 #include "reference/sampling_math.h"
-#include "reference/texture_sampler.h"
+#include "scene/texture_sampler.h"
 
 #include <cmath>
 #include <limits>

@@ -70,7 +70,6 @@ Image toImage(const std::vector<float>& values, int width, int height) {
     return img;
 }
 
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Per-point statistics from the replicate counts -> per-point standard error and that of
 // the mean over valid points. `perReplicate` samples went into each replicate.
@@ -130,7 +129,7 @@ ReferenceAO referenceAO(const EmbreeScene& scene, const std::vector<SurfacePoint
     for (size_t i = 0; i < n; ++i) {
         const SurfacePoint& sp = points[i];
         if (!sp.valid) continue;
-        if (!finite(sp.position) || !finite(sp.normal) || !finite(sp.geomNormal))
+        if (!finite3(sp.position) || !finite3(sp.normal) || !finite3(sp.geomNormal))
             throw std::invalid_argument("referenceAO: surface point " + std::to_string(i) + " is not finite");
         float ln = glm::length(sp.normal), lg = glm::length(sp.geomNormal);
         if (!(ln > 0.f) || !(lg > 0.f))

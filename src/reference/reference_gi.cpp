@@ -4,7 +4,7 @@
 #include "reference/progress.h"
 #include "reference/sampler.h"
 #include "reference/sampling_math.h"
-#include "reference/texture_sampler.h"
+#include "scene/texture_sampler.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -25,7 +25,6 @@ constexpr float kInvPi = 0.31830988618f;
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
 float maxComponent(const glm::vec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 uint32_t materialOf(const Scene& s, uint32_t tri) {
     return tri < s.triangleMaterial.size() ? s.triangleMaterial[tri] : uint32_t(-1);
@@ -232,7 +231,7 @@ ReferenceGI referenceGI(const EmbreeScene& scene, const View& view, const Refere
     if (view.width <= 0 || view.height <= 0) throw std::invalid_argument("referenceGI: empty view");
     const Scene& s = scene.scene();
     for (size_t i = 0; i < s.lights.size(); ++i)
-        if (!finite(s.lights[i].color) || !finite(s.lights[i].position) || !finite(s.lights[i].direction))
+        if (!finite3(s.lights[i].color) || !finite3(s.lights[i].position) || !finite3(s.lights[i].direction))
             throw std::invalid_argument("referenceGI: light " + std::to_string(i) + " ('" + s.lights[i].name +
                                         "') is not finite");
     const EmitterTable emitters(s);

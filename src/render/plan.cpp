@@ -54,8 +54,7 @@ std::string substitute(std::string text, const RenderRequest& r) {
 }
 
 // The resource that serves a requested AOV in this request.
-ResourceId resourceForAov(const std::string& aov, const RenderRequest& r, const SceneFeatures& s,
-                          const ActiveMethods& active) {
+ResourceId resourceForAov(const std::string& aov, const SceneFeatures& s, const ActiveMethods& active) {
     const bool lit = active.gi && active.gi->lightsTheImage;
     if (aov == "beauty") return kBeauty;
     if (aov == "ao") {
@@ -120,7 +119,7 @@ RenderPlan planRender(const SceneFeatures& s, const RenderRequest& r) {
     }
 
     std::set<ResourceId> needed;
-    for (const auto& aov : r.aovs) needed.insert(resourceForAov(aov, r, s, active));
+    for (const auto& aov : r.aovs) needed.insert(resourceForAov(aov, s, active));
 
     // Walk backwards: a pass runs if it writes a needed resource (or must run, or pruning is
     // off); what it reads becomes needed.

@@ -7,7 +7,6 @@
 namespace vct {
 namespace {
 
-bool finite3(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // The bounding sphere of `b`, with a unit sphere at the origin for empty bounds.
 void boundingSphere(const Bounds3& b, glm::vec3* center, float* radius) {

@@ -45,7 +45,6 @@ struct LoadContext {
 // "node 3".
 std::string label(const char* kind, int index, const std::string& name);
 std::string str3(const glm::vec3& v);
-bool finite3(const glm::vec3& v);
 
 // "texture 7 out of range [0, 3)": every reference to a missing element reads the same.
 template <typename Index>

@@ -24,7 +24,6 @@ std::string label(const char* kind, int index, const std::string& name) {
     return s;
 }
 
-bool finite3(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 std::string str3(const glm::vec3& v) {
     std::ostringstream os;

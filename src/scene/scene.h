@@ -6,12 +6,16 @@
 
 #include <glm/glm.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
 
 namespace vct {
+
+// Every component finite (no NaN, no infinity): what each input check of a point or vector asks.
+inline bool finite3(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 struct Bounds3 {
     glm::vec3 min{std::numeric_limits<float>::max()};

@@ -96,7 +96,6 @@ struct LevelSampler {
     }
 };
 
-bool finite3(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // cone_surface: false for sky or unusable normals.
 bool surface(const SparsePoint& pt, glm::vec3& n, glm::vec3& ng) {

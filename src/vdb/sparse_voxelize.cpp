@@ -4,7 +4,7 @@
 // is the occupied set, and each occupied voxel adds up the sums of every thread. The sums are
 // integers (the GPU's fixed-point scales), so the total does not depend on which thread saw
 // which triangle: the grids are bit-identical for any thread count and schedule.
-#include "reference/texture_sampler.h"
+#include "scene/texture_sampler.h"
 #include "vdb/sparse_detail.h"
 #include "vdb/triangle_box.h"
 #include "voxelize/voxel_grid.h"

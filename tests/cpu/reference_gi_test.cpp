@@ -3,7 +3,7 @@
 // white furnace, inverse-square point lights, the form factor of a square emitter.
 #include "reference/reference_gi.h"
 #include "reference/scene_shapes.h"
-#include "reference/texture_sampler.h"
+#include "scene/texture_sampler.h"
 #include "core/view.h"
 
 #include <gtest/gtest.h>

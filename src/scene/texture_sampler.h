@@ -1,4 +1,4 @@
-// CPU texture lookups for the reference path tracer: bilinear filtering of the base level
+// CPU texture lookups (the reference path tracer, the sparse voxelizer): bilinear filtering of the base level
 // with the texture's wrap modes (repeat / clamp-to-edge), texel centres at (i + 0.5) / size,
 // row 0 at v = 0 (glTF's uv origin is the top-left of the image). Colour channels of base
 // colour and emissive textures are sRGB-encoded (glTF 2.0 spec, section 3.9.2): texels are

@@ -1,4 +1,4 @@
-#include "reference/texture_sampler.h"
+#include "scene/texture_sampler.h"
 
 #include <array>
 #include <cmath>
