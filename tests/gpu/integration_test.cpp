@@ -3,6 +3,7 @@
 // project's scenes and the off-screen occluder study (issues 3, 5 and 7).
 #include "eval/comparison.h"
 #include "gl/context.h"
+#include "gl/program_cache.h"
 #include "methods/registry.h"
 #include "render/renderer.h"
 #include "scene/camera.h"
@@ -82,6 +83,36 @@ TEST(Integration, ComparisonOfAllAoMethodsVoxelizesOnce) {
     GlContext::shared().checkErrors("integration");
     EXPECT_EQ(session.passRunCounts().at("voxelize"), 1);
     EXPECT_EQ(session.passRunCounts().at("gbuffer"), 1);
+}
+
+// Every pass asks the program cache for its program: however many passes, methods and
+// renders use a program, it is compiled once (the second round compiles nothing).
+TEST(Integration, EachProgramIsCompiledOncePerSession) {
+    Scene s = projectScene("cornell_box");
+    RenderSession session(s);
+    RenderRequest r = requestFor(s, 24);
+    r.voxelRes = 16;
+    r.spp = 4;
+    r.aovs = {"beauty", "ao", "indirect", "voxel_opacity"};
+    auto round = [&] {
+        for (const char* ao : {"gtao", "hbao", "vct"})
+            for (const char* gi : {"none", "vct"}) {
+                r.ao = ao;
+                r.gi = gi;
+                r.aovs = std::string(gi) == "vct" || std::string(ao) == "vct"
+                             ? std::vector<std::string>{"beauty", "ao", "indirect", "voxel_opacity"}
+                             : std::vector<std::string>{"beauty", "ao"};
+                session.render(r);
+            }
+        r.width = r.height = 20;  // another view size: new G-buffer, same programs
+    };
+    round();
+    const std::map<std::string, int> afterFirst = programCompileCounts();
+    round();
+    GlContext::shared().checkErrors("programs once");
+    EXPECT_GT(afterFirst.size(), 10u);
+    EXPECT_EQ(programCompileCounts(), afterFirst) << "the second round compiled a program again or anew";
+    for (const auto& [id, count] : programCompileCounts()) EXPECT_EQ(count, 1) << id;
 }
 
 // Issue 5: every screen-space method scored on the Cornell box and floor_suzanne; GTAO High
