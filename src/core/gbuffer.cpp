@@ -1,5 +1,6 @@
 #include "core/gbuffer.h"
 
+#include "core/errors.h"
 #include "gl/readback.h"
 
 namespace vct {
@@ -30,6 +31,38 @@ std::vector<GBufferPoint> readGBufferPoints(const GBuffer& g, bool albedo) {
         pts[i].valid = p[3] > 0.f;
     }
     return pts;
+}
+
+GBuffer makeGBufferFromPoints(const std::vector<GBufferPoint>& points, int width, int height) {
+    if (width < 1 || height < 1 || points.size() != size_t(width) * size_t(height))
+        throw InternalError("makeGBufferFromPoints", std::to_string(points.size()) + " points for a " +
+                                                         std::to_string(width) + "x" + std::to_string(height) + " image");
+    Image position(width, height, 4), normal(width, height, 4), geom(width, height, 4), albedo(width, height, 4),
+        emission(width, height, 4);
+    for (size_t i = 0; i < points.size(); ++i) {
+        const GBufferPoint& p = points[i];
+        if (!p.valid) continue;
+        for (int c = 0; c < 3; ++c) {
+            position.pixels[4 * i + c] = p.position[c];
+            normal.pixels[4 * i + c] = p.normal[c];
+            geom.pixels[4 * i + c] = p.geomNormal[c];
+            albedo.pixels[4 * i + c] = p.albedo[c];
+        }
+        position.pixels[4 * i + 3] = 1.f;  // a positive depth marks a surface
+        normal.pixels[4 * i + 3] = 1.f;
+        geom.pixels[4 * i + 3] = 1.f;
+        albedo.pixels[4 * i + 3] = 1.f;
+    }
+    GBuffer g;
+    g.width = width;
+    g.height = height;
+    for (auto [texture, image] : {std::pair<GlTexture*, const Image*>{&g.position, &position}, {&g.normal, &normal},
+                                  {&g.geomNormal, &geom}, {&g.albedo, &albedo}, {&g.emission, &emission}}) {
+        *texture = createTexture2D(GL_RGBA32F, width, height);
+        uploadTexture2D(texture->id(), *image);
+    }
+    g.depth = createTexture2D(GL_DEPTH_COMPONENT32F, width, height);
+    return g;
 }
 
 }  // namespace vct

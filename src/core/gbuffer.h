@@ -44,5 +44,8 @@ struct GBufferPoint {
 };
 // Every pixel's point, top row first (element y * width + x).
 std::vector<GBufferPoint> readGBufferPoints(const GBuffer& g, bool albedo = false);
+// A G-buffer holding given points (top row first, width * height of them; invalid ones are
+// sky), for running the estimators at chosen surface points instead of a camera's pixels.
+GBuffer makeGBufferFromPoints(const std::vector<GBufferPoint>& points, int width, int height);
 
 }  // namespace vct

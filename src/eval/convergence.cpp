@@ -1,0 +1,268 @@
+#include "eval/convergence.h"
+
+#include "cone/cone_set.h"
+#include "cone/cone_settings.h"
+#include "core/method.h"
+#include "gl/context.h"
+#include "gl/readback.h"
+#include "methods/registry.h"
+#include "render/plan.h"
+#include "scene/camera.h"
+#include "scene/scene_builder.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace vct {
+
+namespace {
+
+std::string fmt(float v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+// The floor: a square of side `size` at y = 0 facing up, under everything.
+void addFloor(SceneBuilder& b, int material, float size) {
+    b.addPlane("floor", glm::vec3(0.f), glm::vec2(size), material);
+}
+
+void addRect(SceneBuilder& b, AnalyticOccluders& occ, const std::string& name, const AnalyticRect& r, int material) {
+    // A parallelogram (two triangles); both faces occlude.
+    b.addQuad(name, r.center - r.u - r.v, 2.f * r.u, 2.f * r.v, material);
+    occ.rects.push_back(r);
+}
+
+void addDisc(SceneBuilder& b, AnalyticOccluders& occ, const std::string& name, const AnalyticDisc& d, int material) {
+    // A fan fine enough that the polygon's area is within 0.01% of the disc's.
+    const int segments = 192;
+    const glm::vec3 n = glm::normalize(d.normal);
+    const glm::vec3 t = glm::normalize(std::abs(n.y) < 0.9f ? glm::cross(n, glm::vec3(0, 1, 0)) : glm::cross(n, glm::vec3(1, 0, 0)));
+    const glm::vec3 s = glm::cross(n, t);
+    std::vector<glm::vec3> pos{d.center};
+    std::vector<uint32_t> idx;
+    for (int i = 0; i < segments; ++i) {
+        const float a = 2.f * float(M_PI) * float(i) / float(segments);
+        pos.push_back(d.center + d.radius * (std::cos(a) * t + std::sin(a) * s));
+        idx.insert(idx.end(), {0u, uint32_t(1 + i), uint32_t(1 + (i + 1) % segments)});
+    }
+    b.addNode(name, b.addMesh(name, pos, {}, idx, material));
+    occ.discs.push_back(d);
+}
+
+void addSphere(SceneBuilder& b, AnalyticOccluders& occ, const std::string& name, const AnalyticSphere& sp,
+               int material) {
+    const int rings = 64, sectors = 128;
+    std::vector<glm::vec3> pos, nrm;
+    std::vector<uint32_t> idx;
+    for (int i = 0; i <= rings; ++i)
+        for (int j = 0; j <= sectors; ++j) {
+            const float th = float(M_PI) * float(i) / float(rings), ph = 2.f * float(M_PI) * float(j) / float(sectors);
+            const glm::vec3 n(std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph));
+            pos.push_back(sp.center + sp.radius * n);
+            nrm.push_back(n);
+        }
+    for (int i = 0; i < rings; ++i)
+        for (int j = 0; j < sectors; ++j) {
+            const uint32_t a = uint32_t(i * (sectors + 1) + j), b2 = a + uint32_t(sectors + 1);
+            idx.insert(idx.end(), {a, a + 1, b2, a + 1, b2 + 1, b2});
+        }
+    b.addNode(name, b.addMesh(name, pos, nrm, idx, material));
+    occ.spheres.push_back(sp);
+}
+
+// An axis-aligned box [lo, hi] as six rectangles.
+void addBox(SceneBuilder& b, AnalyticOccluders& occ, const std::string& name, const glm::vec3& lo, const glm::vec3& hi,
+            int material) {
+    b.addBox(name, lo, hi, material);
+    const glm::vec3 c = 0.5f * (lo + hi), e = 0.5f * (hi - lo);
+    for (int a = 0; a < 3; ++a)
+        for (float side : {-1.f, 1.f}) {
+            glm::vec3 center = c, u(0.f), v(0.f);
+            center[a] += side * e[a];
+            u[(a + 1) % 3] = e[(a + 1) % 3];
+            v[(a + 2) % 3] = e[(a + 2) % 3];
+            occ.rects.push_back({center, u, v});
+        }
+}
+
+// A 5 x 5 grid of floor points, x and z in [lo, hi].
+std::vector<glm::vec3> floorGrid(float lo, float hi) {
+    std::vector<glm::vec3> pts;
+    for (int i = 0; i < 5; ++i)
+        for (int j = 0; j < 5; ++j)
+            pts.emplace_back(lo + (hi - lo) * float(j) / 4.f, 0.f, lo + (hi - lo) * float(i) / 4.f);
+    return pts;
+}
+
+struct CaseBuilder {
+    AoConvergenceCase c;
+    SceneBuilder b{"convergence"};
+    int floorMaterial, occluderMaterial;
+    explicit CaseBuilder(const std::string& family, const std::string& name) {
+        c.family = family;
+        c.name = name;
+        floorMaterial = b.addMaterial("floor", glm::vec3(0.7f));
+        occluderMaterial = b.addMaterial("occluder", glm::vec3(0.5f));
+    }
+    AoConvergenceCase finish(float floorSize) {
+        addFloor(b, floorMaterial, floorSize);
+        c.scene = b.toScene();
+        return c;
+    }
+};
+
+// The same case with its occluder on screen: a few points on the occluder's surface join the
+// G-buffer (their AO is not scored).
+AoConvergenceCase onScreen(AoConvergenceCase c, std::vector<glm::vec3> points, glm::vec3 normal) {
+    c.onScreen = true;
+    c.name.replace(c.name.size() - 3, 3, "on");
+    c.visiblePoints = std::move(points);
+    c.visibleNormals.assign(c.visiblePoints.size(), normal);
+    return c;
+}
+
+}  // namespace
+
+std::vector<AoConvergenceCase> aoConvergenceCases() {
+    const float R = 1.f;
+    std::vector<AoConvergenceCase> cases;
+    auto add = [&](AoConvergenceCase off, std::vector<glm::vec3> visible, glm::vec3 normal) {
+        off.radius = R;
+        cases.push_back(off);
+        cases.push_back(onScreen(off, std::move(visible), normal));
+    };
+    // Square plates: heights 0.2R..0.9R, sides smaller and larger than R; points under the
+    // plate and out to R/2 past its edge.
+    for (float h : {0.2f, 0.5f, 0.9f})
+        for (float side : {0.5f, 2.f}) {
+            CaseBuilder cb("plate", "plate h=" + fmt(h) + "R a=" + fmt(side) + "R off");
+            const AnalyticRect r{glm::vec3(0.f, h, 0.f), glm::vec3(side / 2, 0.f, 0.f), glm::vec3(0.f, 0.f, side / 2)};
+            addRect(cb.b, cb.c.occluders, "plate", r, cb.occluderMaterial);
+            cb.c.points = floorGrid(-(side / 2 + 0.5f * R), side / 2 + 0.5f * R);
+            add(cb.finish(8.f * R), {glm::vec3(0.f, h, 0.f), glm::vec3(side / 4, h, 0.f)}, glm::vec3(0, -1, 0));
+        }
+    // A thick slab (a tenth of R) over a wide area, as a shelf or an overhang above the view.
+    for (float h : {0.3f, 0.56f}) {
+        CaseBuilder cb("slab", "slab h=" + fmt(h) + "R t=0.1R off");
+        addBox(cb.b, cb.c.occluders, "slab", glm::vec3(-3.f, h, -2.f), glm::vec3(3.f, h + 0.1f, 2.f), cb.occluderMaterial);
+        cb.c.points = floorGrid(-1.5f * R, 1.5f * R);
+        add(cb.finish(10.f * R), {glm::vec3(0.f, h, 0.f), glm::vec3(1.f, h, 0.f)}, glm::vec3(0, -1, 0));
+    }
+    // Discs.
+    for (float h : {0.3f, 0.7f})
+        for (float radius : {0.3f, 1.5f}) {
+            CaseBuilder cb("disc", "disc h=" + fmt(h) + "R r=" + fmt(radius) + "R off");
+            addDisc(cb.b, cb.c.occluders, "disc", AnalyticDisc{glm::vec3(0.f, h, 0.f), glm::vec3(0, 1, 0), radius},
+                    cb.occluderMaterial);
+            cb.c.points = floorGrid(-(radius + 0.5f * R), radius + 0.5f * R);
+            add(cb.finish(8.f * R), {glm::vec3(0.f, h, 0.f), glm::vec3(radius / 2, h, 0.f)}, glm::vec3(0, -1, 0));
+        }
+    // A wall (the plane x = 0, 4R tall and 8R wide) and points at distances 0.02R..1.2R.
+    {
+        CaseBuilder cb("wall", "wall off");
+        addRect(cb.b, cb.c.occluders, "wall",
+                AnalyticRect{glm::vec3(0.f, 2.f * R, 0.f), glm::vec3(0.f, 2.f * R, 0.f), glm::vec3(0.f, 0.f, 4.f * R)},
+                cb.occluderMaterial);
+        for (int i = 0; i < 25; ++i) {
+            const float d = 0.02f * R * std::pow(60.f, float(i) / 24.f);  // 0.02R .. 1.2R, log-spaced
+            cb.c.points.emplace_back(d, 0.f, 0.4f * R * float(i % 5 - 2));
+        }
+        add(cb.finish(8.f * R), {glm::vec3(0.f, 0.5f, 0.f), glm::vec3(0.f, 1.f, 0.5f)}, glm::vec3(1, 0, 0));
+    }
+    // A right-angle corner: walls x = 0 and z = 0; points at 0.05R..1.1R from both.
+    {
+        CaseBuilder cb("corner", "corner off");
+        addRect(cb.b, cb.c.occluders, "wall_x",
+                AnalyticRect{glm::vec3(0.f, 2.f * R, 2.f * R), glm::vec3(0.f, 2.f * R, 0.f), glm::vec3(0.f, 0.f, 2.f * R)},
+                cb.occluderMaterial);
+        addRect(cb.b, cb.c.occluders, "wall_z",
+                AnalyticRect{glm::vec3(2.f * R, 2.f * R, 0.f), glm::vec3(2.f * R, 0.f, 0.f), glm::vec3(0.f, 2.f * R, 0.f)},
+                cb.occluderMaterial);
+        for (float x : {0.05f, 0.15f, 0.3f, 0.6f, 1.1f})
+            for (float z : {0.05f, 0.15f, 0.3f, 0.6f, 1.1f}) cb.c.points.emplace_back(x * R, 0.f, z * R);
+        add(cb.finish(8.f * R), {glm::vec3(0.f, 0.5f, 0.5f), glm::vec3(0.5f, 0.5f, 0.f)}, glm::vec3(1, 0, 0));
+    }
+    // Spheres above the floor (on the axis, AO = 1 - (r/d)^2 once R >= d).
+    for (auto [radius, height] : {std::pair<float, float>{0.25f, 0.6f}, {0.5f, 0.8f}}) {
+        CaseBuilder cb("sphere", "sphere r=" + fmt(radius) + "R d=" + fmt(height) + "R off");
+        addSphere(cb.b, cb.c.occluders, "sphere", AnalyticSphere{glm::vec3(0.f, height, 0.f), radius},
+                  cb.occluderMaterial);
+        cb.c.points = floorGrid(-1.f * R, 1.f * R);
+        add(cb.finish(8.f * R), {glm::vec3(0.f, height + radius, 0.f), glm::vec3(0.f, height - radius, 0.f)},
+            glm::vec3(0, 1, 0));
+    }
+    return cases;
+}
+
+std::vector<double> exactAoAt(const AoConvergenceCase& c) {
+    std::vector<double> out;
+    for (const glm::vec3& p : c.points) out.push_back(analyticAo(c.occluders, p, glm::vec3(0, 1, 0), c.radius));
+    return out;
+}
+
+std::vector<double> coneModelAoAt(const AoConvergenceCase& c, const ParamMap& params) {
+    const ConeSettings cone = readConeSettings(params);
+    const std::vector<glm::vec4> set = diffuseConeSet(cone.coneCount);
+    std::vector<double> out;
+    for (const glm::vec3& p : c.points)
+        out.push_back(analyticConeModelAo(c.occluders, p, glm::vec3(0, 1, 0), c.radius, set, cone.apertureDeg));
+    return out;
+}
+
+std::vector<double> vctAoAt(const AoConvergenceCase& c, int voxelRes, const std::string& backend,
+                            const ParamMap& params) {
+    GlContext& gl = GlContext::shared();
+    const Scene& scene = c.scene;
+    const GpuScene gpu = uploadScene(scene);
+    std::vector<GBufferPoint> pts;
+    for (const glm::vec3& p : c.points) pts.push_back({p, glm::vec3(0, 1, 0), glm::vec3(0, 1, 0), glm::vec3(0.7f), true});
+    for (size_t i = 0; i < c.visiblePoints.size(); ++i)
+        pts.push_back({c.visiblePoints[i], c.visibleNormals[i], c.visibleNormals[i], glm::vec3(0.5f), true});
+    const int width = int(pts.size());
+    const GBuffer gbuffer = makeGBufferFromPoints(pts, width, 1);
+
+    RenderRequest r;
+    r.width = width;
+    r.height = 1;
+    r.ao = "vct";
+    r.aovs = {"ao"};
+    r.radius = c.radius;
+    r.voxelRes = voxelRes;
+    r.backend = backend;
+    r.params = params;
+    r.camera = defaultCamera(scene.bounds, float(width), 0.8f);
+    const SceneFeatures features = analyzeScene(scene);
+    const RenderPlan plan = planRender(features, r);
+    const View view = makeView(r.camera, width, 1);
+    PassTimer timer;
+    StateStore session, frame;
+    FrameOutputs outputs;
+    std::map<std::string, int> runCounts;
+    nlohmann::json extra;
+    MethodContext ctx{plan, r, scene, features, gpu, &gbuffer, view, timer, session, frame, outputs, runCounts, extra};
+    requireMethod(MethodKind::AO, "vct", "--ao")->execute(ctx);
+    gl.checkErrors("convergence " + c.name);
+    const FrameResource* ao = outputs.find(kAo);
+    if (!ao) throw InternalError("vctAoAt", "the VCT method wrote no AO");
+    const Image img = ao->image.empty() ? readTexture2D(ao->texture.id(), width, 1, 1) : ao->image;
+    std::vector<double> out;
+    for (size_t i = 0; i < c.points.size(); ++i) out.push_back(img.pixels[i]);
+    return out;
+}
+
+PointError pointError(const std::vector<double>& a, const std::vector<double>& b) {
+    PointError e;
+    if (a.size() != b.size() || a.empty()) throw InternalError("pointError", "sizes differ or are empty");
+    double s = 0.0;
+    for (size_t i = 0; i < a.size(); ++i) {
+        const double d = a[i] - b[i];
+        s += d * d;
+        e.max = std::max(e.max, std::abs(d));
+    }
+    e.rms = std::sqrt(s / double(a.size()));
+    return e;
+}
+
+}  // namespace vct

@@ -1,0 +1,59 @@
+// The convergence harness of voxel cone tracing: families of closed-form AO cases (plates
+// and discs above a floor at heights and sizes around R, a wall, a right-angle corner, a
+// sphere above a plane), each scored at 25 fixed floor points, some within R of an
+// occluder's edge. Every point has three values: the exact AO and the cone model of VCT's
+// cone set, both by analytic quadrature (eval/analytic_ao.h), and what VCT computes there
+// through the registry's method (dense or sparse, any resolution and --param), on a G-buffer
+// made of the points. VCT's error splits into
+//   cone error  = cone model - exact   (the cone set's, whatever the voxels),
+//   voxel error = VCT - cone model     (what finer voxels must drive to zero).
+// An occluder is off screen (only the floor points are in the G-buffer, as when the camera
+// looks down under a shelf) or on screen (points on the occluder join the G-buffer), which
+// changes the region an AO-only render voxelizes.
+#pragma once
+
+#include "core/params.h"
+#include "eval/analytic_ao.h"
+#include "scene/scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace vct {
+
+struct AoConvergenceCase {
+    std::string family;  // plate, disc, wall, corner, sphere
+    std::string name;    // e.g. "plate h=0.5R a=2R off"
+    float radius = 1.f;  // R
+    Scene scene;         // the floor and the occluders as triangles
+    AnalyticOccluders occluders;          // the same occluders, exactly
+    std::vector<glm::vec3> points;        // scored points on the floor (normal +Y)
+    std::vector<glm::vec3> visiblePoints; // on screen: points on the occluders' surfaces (not scored)
+    std::vector<glm::vec3> visibleNormals;
+    bool onScreen = false;
+};
+
+// Every case of every family, off and on screen.
+std::vector<AoConvergenceCase> aoConvergenceCases();
+
+// Exact AO and cone-model AO at a case's points (the cone set and aperture of `params`'
+// vct.cones / vct.aperture).
+std::vector<double> exactAoAt(const AoConvergenceCase& c);
+std::vector<double> coneModelAoAt(const AoConvergenceCase& c, const ParamMap& params);
+
+// VCT's AO at a case's points: --ao vct at `voxelRes` on `backend` (gl or vdb) with `params`,
+// through the registry's method on a G-buffer of the points (and, on screen, the visible
+// occluder points). Needs the GL context.
+std::vector<double> vctAoAt(const AoConvergenceCase& c, int voxelRes, const std::string& backend,
+                            const ParamMap& params);
+
+// RMS and largest absolute difference of a - b.
+struct PointError {
+    double rms = 0.0;
+    double max = 0.0;
+};
+PointError pointError(const std::vector<double>& a, const std::vector<double>& b);
+
+}  // namespace vct
