@@ -34,9 +34,9 @@ AoFilterSettings readAoFilterSettings(const ParamMap& params, bool boxAllowed) {
 
 std::vector<float> bilateralGaussianWeights(int radius, float sigma) {
     if (radius < 0 || radius > gpu::BLUR_MAX_RADIUS)
-        throw std::invalid_argument("bilateralGaussianWeights: radius " + std::to_string(radius) + " outside [0, " +
-                                    std::to_string(gpu::BLUR_MAX_RADIUS) + "]");
-    if (!(sigma > 0.f)) throw std::invalid_argument("bilateralGaussianWeights: sigma must be > 0");
+        throw InternalError("bilateralGaussianWeights", "radius " + std::to_string(radius) + " outside [0, " +
+                                                            std::to_string(gpu::BLUR_MAX_RADIUS) + "]");
+    if (!(sigma > 0.f)) throw InternalError("bilateralGaussianWeights", "sigma must be > 0");
     std::vector<double> w(size_t(radius) + 1);
     double sum = 0.0;
     for (int i = 0; i <= radius; ++i) {

@@ -1,7 +1,9 @@
 // vct: the headless command line. Parses options with CLI11 into option structs and hands
 // them to the commands in src/app; exit codes: 0 success, 1 runtime failure (bad scene,
-// GL error), 2 usage (unknown option, malformed or out-of-range value, unimplemented).
+// GL error) or internal error, 2 usage (unknown option, malformed or out-of-range value,
+// unimplemented); see app/exit_codes.h.
 #include "app/commands.h"
+#include "app/exit_codes.h"
 #include "app/render_options.h"
 #include "methods/registry.h"
 
@@ -24,6 +26,9 @@ int main(int argc, char** argv) {
     using namespace vct;
     CLI::App app{"vct: voxel cone tracing, screen-space AO and a ray-traced reference, scored against each other"};
     app.require_subcommand(1);
+    // Parse errors are usage errors: the same prefix as those the commands throw.
+    app.failure_message(
+        [](const CLI::App* a, const CLI::Error& e) { return "vct: error: " + CLI::FailureMessage::simple(a, e); });
     app.set_help_all_flag("--help-all", "Show help for every subcommand");
 
     RenderOptions ro;
@@ -84,11 +89,8 @@ int main(int argc, char** argv) {
         if (*render) return runRender(ro);
         if (*info) return runInfo(infoScene, infoDevice);
         return runResearchCommand(app);
-    } catch (const std::invalid_argument& e) {
-        std::cerr << "vct: error: " << e.what() << "\n";
-        return 2;
     } catch (const std::exception& e) {
-        std::cerr << "vct: error: " << e.what() << "\n";
-        return 1;
+        std::cerr << errorLineFor(e) << "\n";
+        return exitCodeFor(e);
     }
 }

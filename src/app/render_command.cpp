@@ -1,5 +1,6 @@
 #include "app/render_options.h"
 
+#include "core/errors.h"
 #include "eval/image_io.h"
 #include "gl/context.h"
 #include "gl/program_limits.h"
@@ -32,7 +33,7 @@ void parseSize(const std::string& text, int& width, int& height) {
         int v = 0;
         try { v = std::stoi(s, &used); } catch (...) { used = 0; }
         if (used != s.size() || s.empty() || v < 1 || v > 16384)
-            throw std::invalid_argument("--size '" + text + "': expected W or WxH with sides in [1, 16384]");
+            throw UsageError("--size '" + text + "': expected W or WxH with sides in [1, 16384]");
         return v;
     };
     size_t x = text.find('x');
@@ -48,7 +49,7 @@ RenderRequest makeRenderRequest(const RenderOptions& o, const Scene& scene) {
         if (std::find(set.begin(), set.end(), v) == set.end()) {
             std::string all;
             for (const auto& s : set) all += (all.empty() ? "" : ", ") + s;
-            throw std::invalid_argument(opt + " '" + v + "': expected one of " + all);
+            throw UsageError(opt + " '" + v + "': expected one of " + all);
         }
     };
     requireMethod(MethodKind::AO, o.ao, "--ao");
@@ -56,12 +57,12 @@ RenderRequest makeRenderRequest(const RenderOptions& o, const Scene& scene) {
     oneOf(o.backend, {"gl", "vdb"}, "--backend");
     r.ao = o.ao;
     r.gi = o.gi;
-    if (!std::isfinite(o.radius) || o.radius <= 0.f) throw std::invalid_argument("--radius must be finite and > 0");
-    if (!std::isfinite(o.sky) || o.sky < 0.f) throw std::invalid_argument("--sky must be finite and >= 0");
-    if (o.spp < 1 || o.spp > (1 << 20)) throw std::invalid_argument("--spp must be in [1, 1048576]");
+    if (!std::isfinite(o.radius) || o.radius <= 0.f) throw UsageError("--radius must be finite and > 0");
+    if (!std::isfinite(o.sky) || o.sky < 0.f) throw UsageError("--sky must be finite and >= 0");
+    if (o.spp < 1 || o.spp > (1 << 20)) throw UsageError("--spp must be in [1, 1048576]");
     if (o.voxelRes < kMinVoxelRes || o.voxelRes > kMaxVoxelRes)
-        throw std::invalid_argument("--voxel-res must be in [" + std::to_string(kMinVoxelRes) + ", " +
-                                    std::to_string(kMaxVoxelRes) + "]");
+        throw UsageError("--voxel-res must be in [" + std::to_string(kMinVoxelRes) + ", " +
+                         std::to_string(kMaxVoxelRes) + "]");
     r.radius = o.radius;
     r.sky = o.sky;
     r.spp = o.spp;
@@ -74,7 +75,7 @@ RenderRequest makeRenderRequest(const RenderOptions& o, const Scene& scene) {
         if (!findAov(a)) {
             std::string all;
             for (const auto& k : knownAovs()) all += (all.empty() ? "" : ", ") + k.name;
-            throw std::invalid_argument("--aov '" + a + "': unknown AOV (known: " + all + ")");
+            throw UsageError("--aov '" + a + "': unknown AOV (known: " + all + ")");
         }
     for (const auto& p : o.params) r.params.set(p);
 
@@ -82,7 +83,7 @@ RenderRequest makeRenderRequest(const RenderOptions& o, const Scene& scene) {
     cam.nameOrIndex = o.camera;
     cam.fovDeg = o.fovDeg;
     if (!o.eye.empty() || !o.target.empty()) {
-        if (o.eye.empty() || o.target.empty()) throw std::invalid_argument("--eye and --target go together");
+        if (o.eye.empty() || o.target.empty()) throw UsageError("--eye and --target go together");
         cam.hasEye = true;
         cam.eye = parseVec3(o.eye);
         cam.target = parseVec3(o.target);
@@ -147,10 +148,10 @@ void writeRenderOutput(const std::string& path, const std::map<std::string, Imag
         std::string which;
         if (order.size() == 1) which = order.front();
         else if (aovs.count("beauty")) which = "beauty";
-        else throw std::invalid_argument(path + ": a PNG holds one AOV; request one --aov or write .exr");
+        else throw UsageError(path + ": a PNG holds one AOV; request one --aov or write .exr");
         writeImage(path, displayable(which, aovs.at(which), exposure));
     } else {
-        throw std::invalid_argument(path + ": output must end in .png or .exr");
+        throw InternalError("writeRenderOutput", path + ": output must end in .png or .exr");
     }
 }
 
@@ -160,7 +161,9 @@ int runRender(const RenderOptions& o) {
     RenderRequest request = makeRenderRequest(o, scene);
     // Validate the output name before any work.
     if (!endsWith(o.output, ".png") && !endsWith(o.output, ".exr"))
-        throw std::invalid_argument("-o " + o.output + ": output must end in .png or .exr");
+        throw UsageError("-o " + o.output + ": output must end in .png or .exr");
+    // Tone mapping checks it too, but only after the render and as the program's own contract.
+    if (!std::isfinite(o.exposure)) throw UsageError("--exposure must be finite");
 
     GlContext::shared(parseGlDevice(o.glDevice));
     RenderSession session(scene);
@@ -173,10 +176,10 @@ int runRender(const RenderOptions& o) {
     RenderResult result = session.render(request);
     auto unused = request.params.unusedKeys();
     if (!unused.empty())
-        throw std::invalid_argument("--param " + unused.front() + ": unknown parameter for this render (see --help-params)");
+        throw UsageError("--param " + unused.front() + ": unknown parameter for this render (see --help-params)");
     for (const auto& [name, img] : result.aovs)
         for (float v : img.pixels)
-            if (!std::isfinite(v)) throw std::runtime_error("AOV '" + name + "' has a non-finite value (bug)");
+            if (!std::isfinite(v)) throw InternalError("runRender", "AOV '" + name + "' has a non-finite value");
 
     std::filesystem::path out(o.output);
     if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());

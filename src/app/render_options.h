@@ -36,7 +36,7 @@ struct RenderOptions {
     std::string glDevice = "auto";
 };
 
-// Turns parsed options into a request for the renderer; throws std::invalid_argument
+// Turns parsed options into a request for the renderer; throws UsageError
 // naming the option for malformed values (exit code 2).
 RenderRequest makeRenderRequest(const RenderOptions& o, const Scene& scene);
 void parseSize(const std::string& text, int& width, int& height);

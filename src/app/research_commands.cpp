@@ -3,6 +3,7 @@
 #include "app/render_options.h"
 #include "app/gallery_command.h"
 #include "app/sweep_commands.h"
+#include "core/errors.h"
 #include "eval/comparison.h"
 #include "gl/context.h"
 #include "methods/registry.h"
@@ -58,17 +59,17 @@ CLI::App* gVoxelizeCmd = nullptr;
 // emission.
 int runVoxelize(const VoxelizeOptions& o) {
     if (o.output.size() < 4 || o.output.substr(o.output.size() - 4) != ".vdb")
-        throw std::invalid_argument("-o " + o.output + ": output must end in .vdb");
+        throw UsageError("-o " + o.output + ": output must end in .vdb");
     if (o.voxelRes < kMinVoxelRes || o.voxelRes > kMaxVoxelRes)
-        throw std::invalid_argument("--voxel-res must be in [" + std::to_string(kMinVoxelRes) + ", " +
-                                    std::to_string(kMaxVoxelRes) + "]");
+        throw UsageError("--voxel-res must be in [" + std::to_string(kMinVoxelRes) + ", " +
+                         std::to_string(kMaxVoxelRes) + "]");
     Scene scene = loadScene(o.scenePath);
     ParamMap params;
     for (const auto& p : o.params) params.set(p);
     const SceneFeatures f = analyzeScene(scene);
     SparseVoxelScene sv = buildSparseVoxels(scene, o.voxelRes, f.lights > 0 || f.hasEmission, o.sky, params);
     auto unused = params.unusedKeys();
-    if (!unused.empty()) throw std::invalid_argument("--param " + unused.front() + ": unknown parameter");
+    if (!unused.empty()) throw UsageError("--param " + unused.front() + ": unknown parameter");
     std::string name = scene.path.substr(scene.path.find_last_of('/') + 1);
     writeVdb(sv, o.output, name);
     const auto& s = sv.stats;
@@ -112,9 +113,9 @@ int runCompare(const CompareOptions& o) {
     s.variants = parseMethodList(o.aoMethods, "ao");
     auto gi = parseMethodList(o.giMethods, "gi");
     s.variants.insert(s.variants.end(), gi.begin(), gi.end());
-    if (s.variants.empty()) throw std::invalid_argument("--methods and --gi name no method to compare");
-    if (o.refSpp < 1) throw std::invalid_argument("--ref-spp must be >= 1");
-    if (o.runs < 1 || o.runs > 100) throw std::invalid_argument("--runs must be in [1, 100]");
+    if (s.variants.empty()) throw UsageError("--methods and --gi name no method to compare");
+    if (o.refSpp < 1) throw UsageError("--ref-spp must be >= 1");
+    if (o.runs < 1 || o.runs > 100) throw UsageError("--runs must be in [1, 100]");
     s.progress = progressLine;
     GlContext::shared(parseGlDevice(o.render.glDevice));
     nlohmann::json doc = runComparison(scene, s);

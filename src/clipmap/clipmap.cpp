@@ -1,6 +1,7 @@
 #include "clipmap/clipmap.h"
 
 #include "cone/clipmap_shared.h"
+#include "core/errors.h"
 #include "gl/program_cache.h"
 #include "voxelize/voxel_gl.h"
 #include "voxelize/voxel_programs.h"
@@ -23,12 +24,12 @@ Bounds3 ClipmapLayout::bounds(int level) const {
 
 ClipmapLayout computeClipmapLayout(const Bounds3& region, const glm::vec3& focus, int levelCount, int resolution) {
     if (levelCount < 1 || levelCount > gpu::CLIPMAP_MAX_LEVELS)
-        throw std::invalid_argument("clipmap: vct.clipmap.levels = " + std::to_string(levelCount) +
-                                    " outside [1, 8]");
-    if (region.empty()) throw std::invalid_argument("clipmap: empty region");
+        throw InternalError("computeClipmapLayout", "vct.clipmap.levels = " + std::to_string(levelCount) +
+                                                        " outside [1, 8]");
+    if (region.empty()) throw InternalError("computeClipmapLayout", "empty region");
     for (int a = 0; a < 3; ++a)
         if (!std::isfinite(region.min[a]) || !std::isfinite(region.max[a]) || !std::isfinite(focus[a]))
-            throw std::invalid_argument("clipmap: region or focus is not finite");
+            throw InternalError("computeClipmapLayout", "region or focus is not finite");
     ClipmapLayout c;
     c.levelCount = levelCount;
     // A multiple of 4: level centres snap to 2 voxels, and half the resolution must stay even
@@ -86,7 +87,7 @@ void nestLevel(const VoxelGrid& fine, VoxelGrid& coarse, const glm::ivec3& offse
 Clipmap buildClipmap(const GpuScene& gpuScene, const Scene& scene, const ClipmapLayout& layout, bool inject,
                      const ParamMap& params, PassTimer& timer) {
     const int n = layout.levelCount;
-    if (n < 1 || int(layout.originIndex.size()) != n) throw std::invalid_argument("clipmap: layout has no levels");
+    if (n < 1 || int(layout.originIndex.size()) != n) throw InternalError("buildClipmap", "layout has no levels");
     Clipmap cm;
     cm.layout = layout;
     cm.levels.resize(size_t(n));

@@ -6,6 +6,7 @@
 #include "cone/cone_gpu.h"
 #include "cone/cone_programs.h"
 #include "cone/cone_set.h"
+#include "core/errors.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -21,12 +22,12 @@ namespace {
 
 void checkInputs(const Clipmap& cm, const GBuffer& g, const View& view, const std::string& pass) {
     if (cm.layout.levelCount < 1 || int(cm.levels.size()) != cm.layout.levelCount)
-        throw std::invalid_argument(pass + ": clipmap has no levels");
+        throw InternalError(pass, "clipmap has no levels");
     for (const VoxelGrid& level : cm.levels) checkGrid(level, pass);
     if (g.width <= 0 || g.height <= 0 || !g.position || !g.normal || !g.geomNormal || !g.albedo)
-        throw std::invalid_argument(pass + ": G-buffer is incomplete (position, normal, geomNormal, albedo)");
+        throw InternalError(pass, "G-buffer is incomplete (position, normal, geomNormal, albedo)");
     if (g.width != view.width || g.height != view.height)
-        throw std::invalid_argument(pass + ": G-buffer size does not match the view");
+        throw InternalError(pass, "G-buffer size does not match the view");
 }
 
 GlTexture traceClipmap(bool gi, const Clipmap& cm, const GBuffer& gbuffer, float maxDistWorld, float sky,
@@ -68,8 +69,7 @@ GlTexture coneTraceClipmapAO(const Clipmap& cm, const GBuffer& gbuffer, const Vi
     checkInputs(cm, gbuffer, view, "coneTraceClipmapAO");
     settings.validate();
     if (!(radius >= 0.f) || !std::isfinite(radius))
-        throw std::invalid_argument("coneTraceClipmapAO: radius " + std::to_string(radius) +
-                                    " must be finite and >= 0");
+        throw InternalError("coneTraceClipmapAO", "radius " + std::to_string(radius) + " must be finite and >= 0");
     auto scope = timer.scope("cone_ao");
     return traceClipmap(false, cm, gbuffer, radius, 0.f, settings);
 }
@@ -79,10 +79,9 @@ GlTexture coneTraceClipmapGI(const Clipmap& cm, const GBuffer& gbuffer, const Vi
     checkInputs(cm, gbuffer, view, "coneTraceClipmapGI");
     settings.validate();
     for (const VoxelGrid& g : cm.levels)
-        if (!g.radiance) throw std::invalid_argument("coneTraceClipmapGI: clipmap has no radiance (inject first)");
+        if (!g.radiance) throw InternalError("coneTraceClipmapGI", "clipmap has no radiance (inject first)");
     if (!(sky >= 0.f) || !std::isfinite(sky))
-        throw std::invalid_argument("coneTraceClipmapGI: sky radiance " + std::to_string(sky) +
-                                    " must be finite and >= 0");
+        throw InternalError("coneTraceClipmapGI", "sky radiance " + std::to_string(sky) + " must be finite and >= 0");
     // As the dense path: twice the coarsest level's diagonal bounds every path inside it.
     const float diagonal = std::sqrt(3.f) * float(cm.layout.resolution) *
                            cm.layout.voxelSize(cm.layout.levelCount - 1);

@@ -2,6 +2,7 @@
 
 #include "cone/cone_gpu.h"
 #include "cone/cone_programs.h"
+#include "core/errors.h"
 #include "voxelize/voxel_gl.h"
 #include "voxelize/voxelize.h"
 
@@ -28,8 +29,8 @@ int readVctBounces(const ParamMap& params) { return bounceSettings().read(params
 void refuseVctBounces(const ParamMap& params, bool injects, const std::string& where) {
     const int bounces = readVctBounces(params);
     if (injects && params.has("vct.bounces") && bounces > 0)
-        throw std::invalid_argument(where + ": vct.bounces = " + std::to_string(bounces) +
-                                    " is not supported (direct light only; use vct.bounces=0)");
+        throw UsageError(where + ": vct.bounces = " + std::to_string(bounces) +
+                         " is not supported (direct light only; use vct.bounces=0)");
 }
 
 std::vector<VoxelListSlab> voxelListSlabs(const glm::ivec3& res, size_t occupiedVoxels) {
@@ -55,9 +56,9 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
     const bool bounceSky = settings.sky;
     if (bounces == 0) return;
     if (!grid.radiance || !grid.albedo || !grid.normal)
-        throw std::invalid_argument("traceVoxelBounces: the grid has no injected radiance");
+        throw InternalError("traceVoxelBounces", "the grid has no injected radiance");
     if (!(sky >= 0.f) || !std::isfinite(sky))
-        throw std::invalid_argument("traceVoxelBounces: sky radiance must be finite and >= 0");
+        throw InternalError("traceVoxelBounces", "sky radiance must be finite and >= 0");
     cone.validate();
     if (grid.occupiedVoxels == 0) return;  // nothing gathers
 

@@ -50,7 +50,7 @@ int readVctBounces(const ParamMap& params);  // bounceSettings().read(params).bo
 
 // For volumes that hold direct light only (the vdb backend, clipmaps): reads vct.bounces
 // and, when the volume `injects`, refuses an explicit request for bounces with
-// std::invalid_argument naming `where`. The default is not a request.
+// UsageError naming `where`. The default is not a request.
 void refuseVctBounces(const ParamMap& params, bool injects, const std::string& where);
 
 // Adds readVctBounces(params) bounces to grid.radiance (level 0; mips are rebuilt for each

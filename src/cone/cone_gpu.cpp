@@ -1,6 +1,7 @@
 #include "cone/cone_gpu.h"
 
 #include "cone/cone_set.h"
+#include "core/errors.h"
 
 #include <cmath>
 #include <map>
@@ -82,11 +83,11 @@ GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer) {
 
 void checkGrid(const VoxelGrid& grid, const std::string& pass) {
     if (glm::any(glm::lessThan(grid.resolution, glm::ivec3(1))))
-        throw std::invalid_argument(pass + ": voxel grid has no resolution");
+        throw InternalError(pass, "voxel grid has no resolution");
     if (!(grid.voxelSize > 0.f) || !std::isfinite(grid.voxelSize))
-        throw std::invalid_argument(pass + ": voxel grid has voxelSize " + std::to_string(grid.voxelSize));
-    if (grid.levels < 1) throw std::invalid_argument(pass + ": voxel grid has no mip levels");
-    if (!grid.opacity) throw std::invalid_argument(pass + ": voxel grid has no opacity texture");
+        throw InternalError(pass, "voxel grid has voxelSize " + std::to_string(grid.voxelSize));
+    if (grid.levels < 1) throw InternalError(pass, "voxel grid has no mip levels");
+    if (!grid.opacity) throw InternalError(pass, "voxel grid has no opacity texture");
 }
 
 }  // namespace vct::conedetail

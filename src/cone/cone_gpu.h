@@ -44,7 +44,7 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
 // writing a new GL_RGBA32F (GI) or GL_R32F (AO) texture of the G-buffer's size.
 GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer);
 
-// Throws std::invalid_argument naming `pass` if the grid is not usable.
+// Throws InternalError naming `pass` if the grid is not usable.
 void checkGrid(const VoxelGrid& grid, const std::string& pass);
 
 }  // namespace vct::conedetail

@@ -1,5 +1,7 @@
 #include "cone/cone_set.h"
 
+#include "core/errors.h"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -38,7 +40,7 @@ std::vector<glm::vec4> vogelDisc(int n) {
 std::vector<glm::vec4> diffuseConeSet(int coneCount) {
     if (coneCount == 6) return villegasSix();
     if (coneCount == 16) return vogelDisc(16);
-    throw std::invalid_argument("diffuseConeSet: " + std::to_string(coneCount) + " cones (expected 6 or 16)");
+    throw InternalError("diffuseConeSet", std::to_string(coneCount) + " cones (expected 6 or 16)");
 }
 
 }  // namespace vct

@@ -9,14 +9,14 @@ namespace vct {
 
 namespace {
 void require(bool ok, const std::string& what) {
-    if (!ok) throw std::invalid_argument("ConeSettings: " + what);
+    if (!ok) throw InternalError("ConeSettings", what);
 }
 }  // namespace
 
 float defaultConeAperture(int coneCount) {
     if (coneCount == 6) return gpu::CONE_DEFAULT_APERTURE_6;
     if (coneCount == 16) return gpu::CONE_DEFAULT_APERTURE_16;
-    throw std::invalid_argument("vct.cones = " + std::to_string(coneCount) + ": expected 6 or 16");
+    throw InternalError("defaultConeAperture", "vct.cones = " + std::to_string(coneCount) + ": expected 6 or 16");
 }
 
 void ConeSettings::validate() const {

@@ -31,7 +31,7 @@ struct ConeSettings {
     ConeAoMapping aoMapping = ConeAoMapping::Linear;
     bool planeLimit = true;         // limit the footprint by the height above the tangent plane
 
-    // Throws std::invalid_argument naming the field if a value is outside its range.
+    // Throws InternalError naming the field if a value is outside its range.
     void validate() const;
 };
 

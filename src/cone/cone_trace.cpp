@@ -3,6 +3,7 @@
 #include "cone/cone_gpu.h"
 #include "cone/cone_programs.h"
 #include "cone/cone_set.h"
+#include "core/errors.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -20,11 +21,11 @@ enum class ConeMode { AO, GI };
 
 void checkGBuffer(const GBuffer& g, const View& view, const std::string& pass) {
     if (g.width <= 0 || g.height <= 0 || !g.position || !g.normal || !g.geomNormal || !g.albedo)
-        throw std::invalid_argument(pass + ": G-buffer is incomplete (position, normal, geomNormal, albedo)");
+        throw InternalError(pass, "G-buffer is incomplete (position, normal, geomNormal, albedo)");
     if (g.width != view.width || g.height != view.height)
-        throw std::invalid_argument(pass + ": G-buffer " + std::to_string(g.width) + "x" +
-                                    std::to_string(g.height) + " does not match the view " +
-                                    std::to_string(view.width) + "x" + std::to_string(view.height));
+        throw InternalError(pass, "G-buffer " + std::to_string(g.width) + "x" + std::to_string(g.height) +
+                                      " does not match the view " + std::to_string(view.width) + "x" +
+                                      std::to_string(view.height));
 }
 
 // One cone pass: AO (R32F) or GI (RGBA32F).
@@ -43,7 +44,7 @@ GlTexture coneTraceAO(const VoxelGrid& grid, const GBuffer& gbuffer, const View&
     checkGBuffer(gbuffer, view, "coneTraceAO");
     settings.validate();
     if (!(radius >= 0.f) || !std::isfinite(radius))
-        throw std::invalid_argument("coneTraceAO: radius " + std::to_string(radius) + " must be finite and >= 0");
+        throw InternalError("coneTraceAO", "radius " + std::to_string(radius) + " must be finite and >= 0");
     auto scope = timer.scope("cone_ao");
     return tracePass(ConeMode::AO, grid, gbuffer, radius, 0.f, settings);
 }
@@ -53,9 +54,9 @@ GlTexture coneTraceGI(const VoxelGrid& grid, const GBuffer& gbuffer, const View&
     checkGrid(grid, "coneTraceGI");
     checkGBuffer(gbuffer, view, "coneTraceGI");
     settings.validate();
-    if (!grid.radiance) throw std::invalid_argument("coneTraceGI: voxel grid has no radiance (inject first)");
+    if (!grid.radiance) throw InternalError("coneTraceGI", "voxel grid has no radiance (inject first)");
     if (!(sky >= 0.f) || !std::isfinite(sky))
-        throw std::invalid_argument("coneTraceGI: sky radiance " + std::to_string(sky) + " must be finite and >= 0");
+        throw InternalError("coneTraceGI", "sky radiance " + std::to_string(sky) + " must be finite and >= 0");
     // GI cones run until they leave the grid: the box diagonal bounds every path inside it.
     float diagonal = glm::length(glm::vec3(grid.resolution)) * grid.voxelSize;
     auto scope = timer.scope("cone_gi");

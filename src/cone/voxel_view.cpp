@@ -2,6 +2,7 @@
 #include "cone/cone_gpu.h"
 #include "cone/cone_programs.h"
 #include "cone/cone_trace.h"
+#include "core/errors.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -13,19 +14,19 @@ using namespace conedetail;
 GlTexture rayMarchVoxels(const VoxelGrid& grid, const View& view, const std::string& what, int level,
                          PassTimer& timer) {
     checkGrid(grid, "rayMarchVoxels");
-    if (view.width <= 0 || view.height <= 0) throw std::invalid_argument("rayMarchVoxels: empty view");
+    if (view.width <= 0 || view.height <= 0) throw InternalError("rayMarchVoxels", "empty view");
     int channel = 0;
     if (what == "opacity") channel = gpu::CONE_CHANNEL_OPACITY;
     else if (what == "albedo") channel = gpu::CONE_CHANNEL_ALBEDO;
     else if (what == "radiance") channel = gpu::CONE_CHANNEL_RADIANCE;
-    else throw std::invalid_argument("rayMarchVoxels: channel '" + what + "' (expected albedo|radiance|opacity)");
+    else throw InternalError("rayMarchVoxels", "channel '" + what + "' (expected albedo|radiance|opacity)");
     if (level < 0 || level >= grid.levels)
-        throw std::invalid_argument("rayMarchVoxels: level " + std::to_string(level) + " outside [0, " +
-                                    std::to_string(grid.levels - 1) + "]");
+        throw InternalError("rayMarchVoxels", "level " + std::to_string(level) + " outside [0, " +
+                                                  std::to_string(grid.levels - 1) + "]");
     if (channel == gpu::CONE_CHANNEL_ALBEDO && !grid.albedo)
-        throw std::invalid_argument("rayMarchVoxels: voxel grid has no albedo texture");
+        throw InternalError("rayMarchVoxels", "voxel grid has no albedo texture");
     if (channel == gpu::CONE_CHANNEL_RADIANCE && !grid.radiance)
-        throw std::invalid_argument("rayMarchVoxels: voxel grid has no radiance (inject first)");
+        throw InternalError("rayMarchVoxels", "voxel grid has no radiance (inject first)");
 
     gpu::ConeUniforms u{};
     setGridUniforms(u, grid);

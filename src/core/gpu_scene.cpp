@@ -40,29 +40,29 @@ void validateScene(const Scene& scene) {
     const std::string where = "scene" + (scene.path.empty() ? std::string() : " '" + scene.path + "'");
     for (size_t i = 0; i < scene.positions.size(); ++i)
         if (!finite3(scene.positions[i]))
-            throw std::invalid_argument(where + ": vertex " + std::to_string(i) + " position is not finite " +
-                                        str3(scene.positions[i]));
+            throw std::runtime_error(where + ": vertex " + std::to_string(i) + " position is not finite " +
+                                     str3(scene.positions[i]));
     for (size_t i = 0; i < scene.normals.size(); ++i)
         if (!finite3(scene.normals[i]))
-            throw std::invalid_argument(where + ": vertex " + std::to_string(i) + " normal is not finite " +
-                                        str3(scene.normals[i]));
+            throw std::runtime_error(where + ": vertex " + std::to_string(i) + " normal is not finite " +
+                                     str3(scene.normals[i]));
     for (size_t t = 0; t < scene.triangles.size(); ++t)
         for (int k = 0; k < 3; ++k)
             if (scene.triangles[t][k] >= scene.positions.size())
-                throw std::invalid_argument(where + ": triangle " + std::to_string(t) + " index " +
-                                            std::to_string(scene.triangles[t][k]) + " out of range [0, " +
-                                            std::to_string(scene.positions.size()) + ")");
+                throw std::runtime_error(where + ": triangle " + std::to_string(t) + " index " +
+                                         std::to_string(scene.triangles[t][k]) + " out of range [0, " +
+                                         std::to_string(scene.positions.size()) + ")");
     for (size_t m = 0; m < scene.materials.size(); ++m) {
         const Material& mat = scene.materials[m];
         if (!finite3(glm::vec3(mat.baseColorFactor)) || !finite3(mat.emissiveFactor))
-            throw std::invalid_argument(where + ": material " + std::to_string(m) + " '" + mat.name +
-                                        "': base colour or emission is not finite");
+            throw std::runtime_error(where + ": material " + std::to_string(m) + " '" + mat.name +
+                                     "': base colour or emission is not finite");
     }
     for (size_t l = 0; l < scene.lights.size(); ++l) {
         const Light& light = scene.lights[l];
         if (!finite3(light.color) || !finite3(light.position) || !finite3(light.direction))
-            throw std::invalid_argument(where + ": light " + std::to_string(l) + " '" + light.name +
-                                        "': colour, position or direction is not finite");
+            throw std::runtime_error(where + ": light " + std::to_string(l) + " '" + light.name +
+                                     "': colour, position or direction is not finite");
     }
 }
 

@@ -23,19 +23,19 @@ float View::focalPx() const { return 0.5f * float(height) / std::tan(0.5f * came
 
 View makeView(const Camera& camera, int width, int height) {
     // A camera built in code skips the loader's checks: a NaN eye or znear 0 would rasterize
-    // garbage (or nothing) without a word.
+    // garbage (or nothing) without a word. Like the loader's, these are errors in the scene.
     const std::string where = "camera '" + camera.name + "'";
     if (!finite3(camera.eye) || !finite3(camera.target) || !finite3(camera.up))
-        throw std::invalid_argument(where + ": eye, target or up is not finite");
+        throw std::runtime_error(where + ": eye, target or up is not finite");
     if (!(glm::length(camera.target - camera.eye) > 0.f))
-        throw std::invalid_argument(where + ": eye and target coincide");
+        throw std::runtime_error(where + ": eye and target coincide");
     const glm::vec3 forward = glm::normalize(camera.target - camera.eye);
     if (!(glm::length(glm::cross(forward, camera.up)) > 1e-6f * glm::length(camera.up)))
-        throw std::invalid_argument(where + ": up is zero or parallel to the view direction");
+        throw std::runtime_error(where + ": up is zero or parallel to the view direction");
     if (!(camera.yfov > 0.f && camera.yfov < 3.14159265f))
-        throw std::invalid_argument(where + ": yfov " + std::to_string(camera.yfov) + " outside (0, pi)");
+        throw std::runtime_error(where + ": yfov " + std::to_string(camera.yfov) + " outside (0, pi)");
     if (!(std::isfinite(camera.znear) && camera.znear > 0.f))
-        throw std::invalid_argument(where + ": znear " + std::to_string(camera.znear) + " must be finite and > 0");
+        throw std::runtime_error(where + ": znear " + std::to_string(camera.znear) + " must be finite and > 0");
     View v;
     v.camera = camera;
     v.width = width;

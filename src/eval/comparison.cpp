@@ -47,13 +47,13 @@ std::vector<MethodVariant> parseMethodList(const std::string& text, const std::s
         size_t b = item.find('[');
         v.method = item.substr(0, b);
         if (b != std::string::npos) {
-            if (item.back() != ']') throw std::invalid_argument("method '" + item + "': missing ']'");
+            if (item.back() != ']') throw UsageError("method '" + item + "': missing ']'");
             std::stringstream ss(item.substr(b + 1, item.size() - b - 2));
             std::string kv;
             while (std::getline(ss, kv, ';')) {
                 size_t eq = kv.find('=');
                 if (eq == std::string::npos || eq == 0)
-                    throw std::invalid_argument("method '" + item + "': expected KEY=VALUE, got '" + kv + "'");
+                    throw UsageError("method '" + item + "': expected KEY=VALUE, got '" + kv + "'");
                 v.params[kv.substr(0, eq)] = kv.substr(eq + 1);
             }
         }

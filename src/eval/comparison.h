@@ -27,7 +27,7 @@ struct MethodVariant {
 };
 
 // Parses "gtao,hbao[hbao.steps=8;hbao.directions=4],vct" (commas inside brackets belong to
-// the variant). Throws std::invalid_argument naming the bad entry.
+// the variant). Throws UsageError naming the bad entry.
 std::vector<MethodVariant> parseMethodList(const std::string& text, const std::string& kind);
 
 struct ComparisonSettings {

@@ -1,5 +1,7 @@
 #include "eval/error_map.h"
 
+#include "core/errors.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -17,8 +19,7 @@ constexpr std::array<float, 3> kWarm = {0.706f, 0.016f, 0.150f};
 
 void requireScale(double scale) {
     if (!(scale > 0.0) || !std::isfinite(scale))
-        throw std::invalid_argument("false colour: scale must be finite and > 0, got " +
-                                    std::to_string(scale));
+        throw InternalError("false colour", "scale must be finite and > 0, got " + std::to_string(scale));
 }
 
 }  // namespace
@@ -54,8 +55,8 @@ Image falseColorError(const Image& estimate, const Image& reference, double scal
 
 Image falseColorLegend(int width, int height, double scale) {
     if (width <= 0 || height <= 0)
-        throw std::invalid_argument("falseColorLegend: size must be positive, got " + std::to_string(width) +
-                                    "x" + std::to_string(height));
+        throw InternalError("falseColorLegend", "size must be positive, got " + std::to_string(width) + "x" +
+                                                    std::to_string(height));
     requireScale(scale);
     Image out(width, height, 3);
     for (int x = 0; x < width; ++x) {

@@ -19,7 +19,7 @@ constexpr float kMaskedGrey = 0.5f;
 
 // RGB image of (estimate - reference), saturating at +-scale (scale > 0, same units as the
 // images). Multi-channel images use the mean signed error over their channels. Pixels with
-// mask channel 0 <= 0.5 are kMaskedGrey. Throws std::invalid_argument on NaN/Inf input,
+// mask channel 0 <= 0.5 are kMaskedGrey. Throws InternalError on NaN/Inf input,
 // mismatched shapes or scale <= 0.
 Image falseColorError(const Image& estimate, const Image& reference, double scale,
                       const Image* mask = nullptr);

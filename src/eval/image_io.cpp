@@ -1,5 +1,7 @@
 #include "eval/image_io.h"
 
+#include "core/errors.h"
+
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -31,8 +33,7 @@ FileKind fileKindOf(const std::string& path) {
     std::string ext = lowercaseExtension(path);
     if (ext == ".exr") return FileKind::Exr;
     if (ext == ".png") return FileKind::Png;
-    throw std::invalid_argument("writeImage: unsupported extension '" + ext + "' in " + path +
-                                " (use .exr or .png)");
+    throw InternalError("writeImage", "unsupported extension '" + ext + "' in " + path + " (use .exr or .png)");
 }
 
 std::vector<std::string> defaultChannelNames(int channels) {
@@ -54,11 +55,11 @@ void writeImage(const std::string& path, const Image& image, const std::vector<s
     requireFinite(image, "writeImage(" + path + ")");
     FileKind kind = fileKindOf(path);
     if (!channelNames.empty() && int(channelNames.size()) != image.channels)
-        throw std::invalid_argument("writeImage(" + path + "): " + std::to_string(channelNames.size()) +
-                                    " channel names for " + std::to_string(image.channels) + " channels");
+        throw InternalError("writeImage(" + path + ")", std::to_string(channelNames.size()) + " channel names for " +
+                                                           std::to_string(image.channels) + " channels");
     if (kind == FileKind::Png && image.channels > 4)
-        throw std::invalid_argument("writeImage(" + path + "): PNG holds at most 4 channels, image has " +
-                                    std::to_string(image.channels));
+        throw InternalError("writeImage(" + path + ")",
+                            "PNG holds at most 4 channels, image has " + std::to_string(image.channels));
 
     OIIO::TypeDesc format = kind == FileKind::Exr ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
     OIIO::ImageSpec spec(image.width, image.height, image.channels, format);
@@ -124,8 +125,7 @@ float srgbFromLinear(float linear) {
 Image toneMapToSrgb(const Image& linear, float exposure) {
     requireFinite(linear, "toneMapToSrgb input");
     if (!std::isfinite(exposure))
-        throw std::invalid_argument("toneMapToSrgb: exposure must be finite, got " +
-                                    std::to_string(exposure));
+        throw InternalError("toneMapToSrgb", "exposure must be finite, got " + std::to_string(exposure));
     float scale = std::exp2(exposure);
     Image out = linear;
     int colorChannels = linear.channels == 4 ? 3 : linear.channels;

@@ -16,7 +16,7 @@ namespace vct {
 // "Y" for one channel, R, G, B, A otherwise. The file is written under a temporary name in the
 // same directory and renamed into place, so a failure never leaves a partial file: the
 // temporary is removed and std::runtime_error names the path and OIIO's error.
-// Throws std::invalid_argument for NaN/Inf pixels, an unknown extension or a bad name count.
+// Throws InternalError for NaN/Inf pixels, an unknown extension or a bad name count.
 void writeImage(const std::string& path, const Image& image,
                 const std::vector<std::string>& channelNames = {});
 

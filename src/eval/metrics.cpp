@@ -1,5 +1,7 @@
 #include "eval/metrics.h"
 
+#include "core/errors.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -16,13 +18,13 @@ namespace {
 
 void requireChannel(int channel, const Image& image, const std::string& what) {
     if (channel < -1 || channel >= image.channels)
-        throw std::invalid_argument(what + ": channel " + std::to_string(channel) + " out of range [-1, " +
-                                    std::to_string(image.channels - 1) + "]");
+        throw InternalError(what, "channel " + std::to_string(channel) + " out of range [-1, " +
+                                      std::to_string(image.channels - 1) + "]");
 }
 
 void requirePeak(double peak) {
     if (!(peak > 0.0) || !std::isfinite(peak))
-        throw std::invalid_argument("metrics: peak must be finite and > 0, got " + std::to_string(peak));
+        throw InternalError("metrics", "peak must be finite and > 0, got " + std::to_string(peak));
 }
 
 // Channels [begin, end) selected by `channel` (-1 = all).

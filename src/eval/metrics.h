@@ -7,7 +7,7 @@
 //  - channel = -1 averages over all channels (each (pixel, channel) sample counts once; SSIM is
 //    the mean of the per-channel SSIMs); channel >= 0 restricts to that channel.
 //  - An empty selection (pixelCount 0) defines every field as 0 (never NaN).
-//  - NaN/Inf in any input throws std::invalid_argument naming the image and the pixel; shape
+//  - NaN/Inf in any input throws InternalError naming the image and the pixel; shape
 //    mismatches throw too.
 #pragma once
 

@@ -1,5 +1,7 @@
 #include "eval/roi.h"
 
+#include "core/errors.h"
+
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -17,7 +19,7 @@ void requireNonNegative(const Image& image, const std::string& what) {
         std::ostringstream msg;
         msg << what << ": negative standard error " << image.pixels[i] << " at pixel ("
             << pixel % size_t(image.width) << ", " << pixel / size_t(image.width) << ")";
-        throw std::invalid_argument(msg.str());
+        throw InternalError("deriveRoiMask", msg.str());
     }
 }
 
@@ -35,7 +37,7 @@ Image deriveRoiMask(const Image& aoWith, const Image& aoWithout, const Image& st
     requireNonNegative(stderrWith, "stderrWith");
     requireNonNegative(stderrWithout, "stderrWithout");
     if (!(k >= 0.0) || !std::isfinite(k))
-        throw std::invalid_argument("deriveRoiMask: k must be finite and >= 0, got " + std::to_string(k));
+        throw InternalError("deriveRoiMask", "k must be finite and >= 0, got " + std::to_string(k));
 
     Image mask(aoWith.width, aoWith.height, 1, 0.f);
     for (int y = 0; y < aoWith.height; ++y)

@@ -15,7 +15,7 @@ constexpr double kRoiAbsoluteFloor = 1e-6;
 // 1-channel 0/1 mask: 1 where |aoWith - aoWithout| > k sqrt(seWith^2 + seWithout^2) + floor,
 // i.e. the difference of two independent estimates exceeds k of its standard errors.
 // All four images must share width, height and channel count; with several channels a pixel
-// is selected when any channel exceeds its threshold. Throws std::invalid_argument on
+// is selected when any channel exceeds its threshold. Throws InternalError on
 // NaN/Inf, negative standard errors, mismatched shapes or k < 0.
 Image deriveRoiMask(const Image& aoWith, const Image& aoWithout, const Image& stderrWith,
                     const Image& stderrWithout, double k = 3.0);

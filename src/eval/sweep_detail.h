@@ -10,7 +10,7 @@
 
 namespace vct::sweep_detail {
 
-// Throws std::invalid_argument("sweep spec: <where>: <what>").
+// Throws UsageError("sweep spec: <where>: <what>").
 [[noreturn]] void fail(const std::string& where, const std::string& what);
 
 // Field paths: join("scenes[1]", "size") = "scenes[1].size", indexed("radius", 2) = "radius[2]".

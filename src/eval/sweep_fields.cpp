@@ -1,6 +1,7 @@
 // Typed reads of single sweep-spec fields; every error names the field by its path.
 #include "eval/sweep_detail.h"
 
+#include "core/errors.h"
 #include "core/params.h"
 #include "render/renderer.h"
 
@@ -14,7 +15,7 @@ namespace vct::sweep_detail {
 using nlohmann::json;
 
 void fail(const std::string& where, const std::string& what) {
-    throw std::invalid_argument("sweep spec: " + where + ": " + what);
+    throw UsageError("sweep spec: " + where + ": " + what);
 }
 
 std::string join(const std::string& where, const std::string& key) {

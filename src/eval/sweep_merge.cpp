@@ -2,6 +2,7 @@
 // one table of flattened records with their Pareto flags.
 #include "eval/sweep.h"
 
+#include "core/errors.h"
 #include "util/atomic_file.h"
 
 #include <algorithm>
@@ -78,7 +79,7 @@ json mergeSweepResults(const std::vector<std::string>& dirs, const std::function
         } else if (fs::exists(dir / "results.json")) {
             loadCaseDir(dir, cases, warn);
         } else {
-            throw std::invalid_argument("merge: " + d + " holds neither cases/ nor results.json");
+            throw UsageError("merge: " + d + " holds neither cases/ nor results.json");
         }
     }
     std::stable_sort(cases.begin(), cases.end(), [](const LoadedCase& a, const LoadedCase& b) {

@@ -2,6 +2,7 @@
 // (resume) and those whose scene file is absent.
 #include "eval/sweep.h"
 
+#include "core/errors.h"
 #include "scene/camera.h"
 #include "scene/gltf_loader.h"
 #include "util/atomic_file.h"
@@ -28,10 +29,10 @@ Shard parseShard(const std::string& text) {
         s.count = std::stoi(text.substr(slash + 1), &used);
         if (used != text.size() - slash - 1) throw std::invalid_argument("trailing");
     } catch (const std::logic_error&) {
-        throw std::invalid_argument("--shard '" + text + "': expected I/N, e.g. 0/2");
+        throw UsageError("--shard '" + text + "': expected I/N, e.g. 0/2");
     }
     if (s.count < 1 || s.index < 0 || s.index >= s.count)
-        throw std::invalid_argument("--shard '" + text + "': need N >= 1 and 0 <= I < N");
+        throw UsageError("--shard '" + text + "': need N >= 1 and 0 <= I < N");
     return s;
 }
 
@@ -46,7 +47,7 @@ SweepSummary runSweep(const SweepSpec& spec, const SweepRunOptions& o) {
     auto log = [&](const std::string& line) {
         if (o.log) o.log(line);
     };
-    if (o.outDir.empty()) throw std::invalid_argument("sweep: no output directory");
+    if (o.outDir.empty()) throw UsageError("sweep: no output directory");
     const fs::path out(o.outDir);
     fs::create_directories(out / "cases");
     const std::vector<SweepCase> all = enumerateSweepCases(spec);
@@ -97,8 +98,8 @@ SweepSummary runSweep(const SweepSpec& spec, const SweepRunOptions& o) {
         cam.fovDeg = c.camera.fovDeg;
         try {
             cs.base.camera = resolveCamera(*scene, cam, float(cs.base.width) / float(cs.base.height));
-        } catch (const std::invalid_argument& e) {
-            throw std::invalid_argument("case " + c.id + ": " + e.what());
+        } catch (const UsageError& e) {
+            throw UsageError("case " + c.id + ": " + e.what());
         }
         cs.referenceSpp = s.settings.referenceSpp;
         cs.timingRuns = s.settings.timingRuns;
@@ -110,6 +111,10 @@ SweepSummary runSweep(const SweepSpec& spec, const SweepRunOptions& o) {
         writeTextFileAtomic((dir / "case.json").string(), caseJson(spec, c).dump(2) + "\n");
         try {
             runComparison(*scene, cs);  // writes results.json last, by rename: the "done" mark
+        } catch (const UsageError& e) {
+            throw UsageError("case " + c.id + ": " + e.what());
+        } catch (const InternalError&) {
+            throw;  // the program's fault, not the case's: keep its kind
         } catch (const std::exception& e) {
             throw std::runtime_error("case " + c.id + ": " + e.what());
         }

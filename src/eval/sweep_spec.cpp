@@ -3,6 +3,7 @@
 #include "eval/sweep_spec.h"
 
 #include "eval/sweep_detail.h"
+#include "core/errors.h"
 #include "core/request.h"
 #include "methods/registry.h"
 
@@ -172,7 +173,7 @@ std::string resolveScenePath(const std::string& entry, const SweepPaths& paths) 
         while (!rest.empty() && rest[0] == '/') rest.erase(0, 1);
         return (fs::path(paths.sharedDir) / rest).lexically_normal().string();
     }
-    if (entry.find(token) != std::string::npos) throw std::invalid_argument("'" + entry + "': ${shared} must come first");
+    if (entry.find(token) != std::string::npos) throw UsageError("'" + entry + "': ${shared} must come first");
     const fs::path p(entry);
     if (p.is_absolute()) return entry;
     const fs::path inSpec = fs::path(paths.specDir) / p;
@@ -244,7 +245,7 @@ SweepSpec parseSweepSpec(const json& j, const SweepPaths& paths, const std::stri
         if (s.variants.empty()) fail(w, "no methods: give \"methods\" at the top level or in the scene");
         try {
             s.path = resolveScenePath(s.entry, paths);
-        } catch (const std::invalid_argument& ex) {
+        } catch (const UsageError& ex) {
             fail(w, ex.what());
         }
         s.stem = fs::path(s.entry).stem().string();
@@ -257,17 +258,17 @@ SweepSpec parseSweepSpec(const json& j, const SweepPaths& paths, const std::stri
 
 SweepSpec loadSweepSpec(const std::string& specPath) {
     std::ifstream in(specPath);
-    if (!in) throw std::invalid_argument("sweep spec " + specPath + ": cannot read the file");
+    if (!in) throw UsageError("sweep spec " + specPath + ": cannot read the file");
     json j;
     try {
         j = json::parse(in);
     } catch (const json::parse_error& e) {
-        throw std::invalid_argument("sweep spec " + specPath + ": not valid JSON: " + e.what());
+        throw UsageError("sweep spec " + specPath + ": not valid JSON: " + e.what());
     }
     try {
         return parseSweepSpec(j, defaultSweepPaths(specPath), specPath);
-    } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument(specPath + ": " + e.what());
+    } catch (const UsageError& e) {
+        throw UsageError(specPath + ": " + e.what());
     }
 }
 

@@ -60,7 +60,7 @@ struct SweepPaths {
 };
 SweepPaths defaultSweepPaths(const std::string& specPath);
 
-// Parses and validates a spec; std::invalid_argument names the offending field as a path
+// Parses and validates a spec; UsageError names the offending field as a path
 // ("scenes[1].cameras[0].eye: ...").
 SweepSpec parseSweepSpec(const nlohmann::json& spec, const SweepPaths& paths, const std::string& specPath = "");
 SweepSpec loadSweepSpec(const std::string& specPath);
@@ -84,7 +84,7 @@ struct SweepCase {
 };
 
 // Scenes in spec order, then cameras in order, then radii in order. Throws
-// std::invalid_argument if two cases would share an id.
+// UsageError if two cases would share an id.
 std::vector<SweepCase> enumerateSweepCases(const SweepSpec& spec);
 
 // The metadata written next to a case's results (DIR/cases/<id>/case.json).

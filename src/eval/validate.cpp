@@ -1,5 +1,7 @@
 #include "eval/validate.h"
 
+#include "core/errors.h"
+
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -8,12 +10,12 @@ namespace vct {
 
 void requireNonEmpty(const Image& image, const std::string& what) {
     if (image.width <= 0 || image.height <= 0 || image.channels <= 0)
-        throw std::invalid_argument(what + ": empty image (" + std::to_string(image.width) + "x" +
-                                    std::to_string(image.height) + "x" + std::to_string(image.channels) +
-                                    ")");
+        throw InternalError("requireNonEmpty", what + ": empty image (" + std::to_string(image.width) + "x" +
+                                                   std::to_string(image.height) + "x" +
+                                                   std::to_string(image.channels) + ")");
     if (image.pixels.size() != size_t(image.width) * size_t(image.height) * size_t(image.channels))
-        throw std::invalid_argument(what + ": pixel buffer holds " + std::to_string(image.pixels.size()) +
-                                    " floats, expected width*height*channels");
+        throw InternalError("requireNonEmpty", what + ": pixel buffer holds " + std::to_string(image.pixels.size()) +
+                                                   " floats, expected width*height*channels");
 }
 
 void requireFinite(const Image& image, const std::string& what) {
@@ -25,7 +27,7 @@ void requireFinite(const Image& image, const std::string& what) {
         std::ostringstream msg;
         msg << what << ": non-finite value " << v << " at pixel (" << pixel % size_t(image.width) << ", "
             << pixel / size_t(image.width) << ") channel " << i % size_t(image.channels);
-        throw std::invalid_argument(msg.str());
+        throw InternalError("requireFinite", msg.str());
     }
 }
 
@@ -34,7 +36,7 @@ void requireSameShape(const Image& a, const std::string& aName, const Image& b, 
         std::ostringstream msg;
         msg << aName << " is " << a.width << "x" << a.height << "x" << a.channels << " but " << bName
             << " is " << b.width << "x" << b.height << "x" << b.channels;
-        throw std::invalid_argument(msg.str());
+        throw InternalError("requireSameShape", msg.str());
     }
 }
 
@@ -45,7 +47,7 @@ void requireMaskFits(const Image* mask, const Image& image, const std::string& i
         std::ostringstream msg;
         msg << "mask is " << mask->width << "x" << mask->height << " but " << imageName << " is "
             << image.width << "x" << image.height;
-        throw std::invalid_argument(msg.str());
+        throw InternalError("requireMaskFits", msg.str());
     }
 }
 

@@ -1,5 +1,5 @@
 // Input checks shared by the evaluation code: every public entry point rejects NaN/Inf and
-// mismatched shapes with an std::invalid_argument that names the image and the pixel, so a
+// mismatched shapes with an InternalError that names the image and the pixel, so a
 // broken estimator fails loudly instead of producing a NaN metric.
 #pragma once
 
@@ -9,7 +9,7 @@
 
 namespace vct {
 
-// Throws std::invalid_argument "<what>: non-finite value <v> at pixel (x, y) channel c".
+// Throws InternalError "... <what>: non-finite value <v> at pixel (x, y) channel c".
 void requireFinite(const Image& image, const std::string& what);
 
 // Throws unless the image has pixels and a consistent buffer size.

@@ -1,5 +1,6 @@
 #include "gallery/gallery.h"
 
+#include "core/errors.h"
 #include "gallery/assets/gallery_assets.h"
 #include "gallery/gallery_input.h"
 #include "gallery/html.h"
@@ -31,14 +32,14 @@ void writeText(const fs::path& path, const std::string& text) {
 }  // namespace
 
 GallerySummary writeGallery(const GallerySettings& settings) {
-    if (settings.inputs.empty()) throw std::invalid_argument("vct gallery: no input directory");
-    if (settings.outputDir.empty()) throw std::invalid_argument("vct gallery: no output directory (-o)");
-    if (settings.thumbnailWidth < 16) throw std::invalid_argument("vct gallery: --thumb-width must be >= 16");
+    if (settings.inputs.empty()) throw UsageError("vct gallery: no input directory");
+    if (settings.outputDir.empty()) throw UsageError("vct gallery: no output directory (-o)");
+    if (settings.thumbnailWidth < 16) throw UsageError("vct gallery: --thumb-width must be >= 16");
     const std::vector<GalleryInput> inputs = findGalleryInputs(settings.inputs);
     const fs::path site(settings.outputDir);
     for (const auto& in : inputs)
         if (fs::exists(site) && fs::equivalent(fs::path(in.dir), site))
-            throw std::invalid_argument("vct gallery: the output directory is an input directory: " + in.dir);
+            throw UsageError("vct gallery: the output directory is an input directory: " + in.dir);
     fs::create_directories(site / "assets");
     fs::create_directories(site / "data");
     writeText(site / "assets" / "gallery.css", galleryCss());

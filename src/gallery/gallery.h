@@ -24,7 +24,7 @@ struct GallerySummary {
     std::vector<std::string> pages;  // site-relative HTML files, index.html first
 };
 
-// Writes the site. Throws std::invalid_argument for bad settings or inputs, std::runtime_error
+// Writes the site. Throws UsageError for bad settings or inputs, std::runtime_error
 // for unreadable inputs or unwritable output (naming the file).
 GallerySummary writeGallery(const GallerySettings& settings);
 

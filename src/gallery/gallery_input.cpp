@@ -1,5 +1,6 @@
 #include "gallery/gallery_input.h"
 
+#include "core/errors.h"
 #include "gallery/html.h"
 
 #include <algorithm>
@@ -68,7 +69,7 @@ std::vector<GalleryInput> findGalleryInputs(const std::vector<std::string>& dirs
     for (const std::string& d : dirs) {
         const fs::path dir(d);
         if (!fs::is_directory(dir))
-            throw std::invalid_argument("gallery input '" + d + "' is not a directory");
+            throw UsageError("gallery input '" + d + "' is not a directory");
         if (fs::exists(dir / "results.json")) {
             add(dir, dirName(dir), dirName(dir));
             continue;
@@ -78,7 +79,7 @@ std::vector<GalleryInput> findGalleryInputs(const std::vector<std::string>& dirs
             for (const auto& e : fs::directory_iterator(dir / "cases"))
                 if (e.is_directory() && fs::exists(e.path() / "results.json")) cases.push_back(e.path());
         if (cases.empty())
-            throw std::invalid_argument(
+            throw UsageError(
                 "gallery input '" + d +
                 "' has neither results.json (vct compare) nor cases/*/results.json (vct sweep)");
         std::sort(cases.begin(), cases.end());

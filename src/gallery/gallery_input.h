@@ -19,7 +19,7 @@ struct GalleryInput {
 
 // Expands each directory: a comparison dir gives one input; a sweep dir (no results.json but
 // cases/*/results.json) gives one per case, in name order. Ids are made unique by a suffix.
-// Throws std::invalid_argument naming a directory that is neither, and std::runtime_error
+// Throws UsageError naming a directory that is neither, and std::runtime_error
 // naming a results.json that cannot be parsed or lacks "records".
 std::vector<GalleryInput> findGalleryInputs(const std::vector<std::string>& dirs);
 

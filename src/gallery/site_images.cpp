@@ -1,5 +1,6 @@
 #include "gallery/site_images.h"
 
+#include "core/errors.h"
 #include "eval/image_io.h"
 
 #include <algorithm>
@@ -26,7 +27,7 @@ Image channelsOf(const Image& img, int first, int count) {
 }  // namespace
 
 Image displayImage(const Image& linear, DisplayEncoding encoding) {
-    if (linear.empty()) throw std::invalid_argument("displayImage: empty image");
+    if (linear.empty()) throw InternalError("displayImage", "empty image");
     if (encoding == DisplayEncoding::AoAsStored) {
         Image out = channelsOf(linear, 0, 1);
         for (float& v : out.pixels) v = std::isfinite(v) ? std::clamp(v, 0.f, 1.f) : 0.f;
@@ -49,7 +50,7 @@ Image displayFromExr(const std::string& exrPath, DisplayEncoding encoding) {
 }
 
 Image thumbnailOf(const Image& display, int maxWidth) {
-    if (maxWidth < 1) throw std::invalid_argument("thumbnailOf: maxWidth must be >= 1");
+    if (maxWidth < 1) throw InternalError("thumbnailOf", "maxWidth must be >= 1");
     if (display.width <= maxWidth) return display;
     const int factor = (display.width + maxWidth - 1) / maxWidth;
     const int w = std::max(1, display.width / factor), h = std::max(1, display.height / factor);
@@ -68,7 +69,7 @@ Image thumbnailOf(const Image& display, int maxWidth) {
 }
 
 Image roiOutline(const Image& mask, float r, float g, float b) {
-    if (mask.empty()) throw std::invalid_argument("roiOutline: empty mask");
+    if (mask.empty()) throw InternalError("roiOutline", "empty mask");
     auto inside = [&](int x, int y) {
         return x >= 0 && y >= 0 && x < mask.width && y < mask.height && mask.at(x, y, 0) > 0.5f;
     };

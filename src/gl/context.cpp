@@ -1,5 +1,7 @@
 #include "gl/context.h"
 
+#include "core/errors.h"
+
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
@@ -65,7 +67,7 @@ GlDevice parseGlDevice(const std::string& name) {
     if (name == "auto") return GlDevice::Auto;
     if (name == "surfaceless") return GlDevice::Surfaceless;
     if (name == "device") return GlDevice::Device;
-    throw std::invalid_argument("unknown --gl-device '" + name + "' (auto, surfaceless, device)");
+    throw UsageError("unknown --gl-device '" + name + "' (auto, surfaceless, device)");
 }
 
 GlContext::GlContext(GlDevice device) : mImpl(std::make_unique<Impl>()) {

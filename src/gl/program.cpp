@@ -1,5 +1,6 @@
 #include "gl/program.h"
 
+#include "core/errors.h"
 #include "gl/embedded_shaders.h"
 
 #include <set>
@@ -13,7 +14,7 @@ namespace {
 const std::string& lookup(const std::string& name) {
     const auto& table = embeddedShaders();
     auto it = table.find(name);
-    if (it == table.end()) throw std::runtime_error("no embedded shader named '" + name + "'");
+    if (it == table.end()) throw InternalError("shader lookup", "no embedded shader named '" + name + "'");
     return it->second;
 }
 
@@ -28,7 +29,7 @@ void expandInto(const std::string& name, std::ostringstream& out, std::set<std::
             line.find('<', p) == std::string::npos) {
             size_t a = line.find('"', p), b = line.find('"', a + 1);
             if (a == std::string::npos || b == std::string::npos)
-                throw std::runtime_error("bad #include in shader '" + name + "': " + line);
+                throw InternalError("shader lookup", "bad #include in shader '" + name + "': " + line);
             expandInto(line.substr(a + 1, b - a - 1), out, seen);
             continue;
         }

@@ -1,5 +1,7 @@
 #include "gl/program_limits.h"
 
+#include "core/errors.h"
+
 #include <epoxy/gl.h>
 
 #include <algorithm>
@@ -77,7 +79,7 @@ ProgramResources inspectProgram(GLuint program) {
     bool stagePresent[kStageCount] = {};
     GLint linked = 0;
     glGetProgramiv(program, GL_LINK_STATUS, &linked);
-    if (!linked) throw std::invalid_argument("inspectProgram: program is not linked");
+    if (!linked) throw InternalError("inspectProgram", "program is not linked");
 
     GLint uniforms = 0;
     glGetProgramInterfaceiv(program, GL_UNIFORM, GL_ACTIVE_RESOURCES, &uniforms);

@@ -1,5 +1,7 @@
 #include "gl/readback.h"
 
+#include "core/errors.h"
+
 #include <stdexcept>
 #include <utility>
 
@@ -12,7 +14,7 @@ GLenum formatFor(int channels) {
         case 2: return GL_RG;
         case 3: return GL_RGB;
         case 4: return GL_RGBA;
-        default: throw std::invalid_argument("readTexture2D: channels must be 1..4");
+        default: throw InternalError("readTexture2D", "channels must be 1..4");
     }
 }
 void flipRows(Image& img) {

@@ -48,15 +48,15 @@ EmbreeScene::EmbreeScene(const Scene& scene) : mSource(&scene) {
     for (size_t i = 0; i < vertexCount; ++i) {
         const glm::vec3& p = scene.positions[i];
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-            throw std::invalid_argument("EmbreeScene: vertex " + std::to_string(i) + " of scene '" + scene.path +
-                                        "' has a non-finite position");
+            throw std::runtime_error("EmbreeScene: vertex " + std::to_string(i) + " of scene '" + scene.path +
+                                     "' has a non-finite position");
         mSceneMaxAbs = std::max(mSceneMaxAbs, maxAbsComponent(p));
     }
     for (size_t i = 0; i < scene.triangles.size(); ++i) {
         const glm::uvec3& t = scene.triangles[i];
         if (t.x >= vertexCount || t.y >= vertexCount || t.z >= vertexCount)
-            throw std::invalid_argument("EmbreeScene: triangle " + std::to_string(i) + " of scene '" + scene.path +
-                                        "' indexes a vertex out of range");
+            throw std::runtime_error("EmbreeScene: triangle " + std::to_string(i) + " of scene '" + scene.path +
+                                     "' indexes a vertex out of range");
     }
 
     mDevice = rtcNewDevice(nullptr);

@@ -34,7 +34,7 @@ struct SurfaceHit {
 class EmbreeScene {
   public:
     // `scene` must outlive this object (its triangle array is shared with Embree).
-    // Throws std::invalid_argument naming the first non-finite vertex or bad index.
+    // Throws std::runtime_error naming the first non-finite vertex or bad index.
     explicit EmbreeScene(const Scene& scene);
     ~EmbreeScene();
     EmbreeScene(const EmbreeScene&) = delete;

@@ -4,6 +4,7 @@
 #include "reference/progress.h"
 #include "reference/sampler.h"
 #include "reference/sampling_math.h"
+#include "core/errors.h"
 #include "core/params.h"
 
 #include <tbb/blocked_range.h>
@@ -19,7 +20,7 @@
 namespace vct {
 
 void ReferenceSettings::validate() const {
-    auto fail = [](const std::string& what) { throw std::invalid_argument("ReferenceSettings: " + what); };
+    auto fail = [](const std::string& what) { throw InternalError("ReferenceSettings", what); };
     if (!(radius > 0.f) || !std::isfinite(radius)) fail("radius must be finite and > 0, got " + std::to_string(radius));
     if (spp < 1 || spp > (1 << 20)) fail("spp must be in [1, 2^20], got " + std::to_string(spp));
     if (!(targetStderr >= 0.f) || !std::isfinite(targetStderr)) fail("targetStderr must be finite and >= 0");
@@ -64,7 +65,7 @@ ReferenceSettings referenceSettingsFromParams(const ParamMap& params, ReferenceS
 namespace {
 
 Image toImage(const std::vector<float>& values, int width, int height) {
-    if (width <= 0 || height <= 0) throw std::logic_error("ReferenceAO: not an image (point mode result)");
+    if (width <= 0 || height <= 0) throw InternalError("ReferenceAO", "not an image (point mode result)");
     Image img(width, height, 1);
     img.pixels = values;
     return img;
@@ -130,10 +131,10 @@ ReferenceAO referenceAO(const EmbreeScene& scene, const std::vector<SurfacePoint
         const SurfacePoint& sp = points[i];
         if (!sp.valid) continue;
         if (!finite3(sp.position) || !finite3(sp.normal) || !finite3(sp.geomNormal))
-            throw std::invalid_argument("referenceAO: surface point " + std::to_string(i) + " is not finite");
+            throw InternalError("referenceAO", "surface point " + std::to_string(i) + " is not finite");
         float ln = glm::length(sp.normal), lg = glm::length(sp.geomNormal);
         if (!(ln > 0.f) || !(lg > 0.f))
-            throw std::invalid_argument("referenceAO: surface point " + std::to_string(i) + " has a zero normal");
+            throw InternalError("referenceAO", "surface point " + std::to_string(i) + " has a zero normal");
         glm::vec3 ns = sp.normal / ln, ng = sp.geomNormal / lg;
         if (glm::dot(ns, ng) < 0.f) ng = -ng;
         float scale = std::max(maxAbsComponent(sp.position), errorFloor);
@@ -193,7 +194,7 @@ ReferenceAO referenceAO(const Scene& scene, const std::vector<SurfacePoint>& poi
 
 ReferenceAO referenceAOPixelArea(const EmbreeScene& scene, const View& view, const ReferenceSettings& settings) {
     settings.validate();
-    if (view.width <= 0 || view.height <= 0) throw std::invalid_argument("referenceAOPixelArea: empty view");
+    if (view.width <= 0 || view.height <= 0) throw InternalError("referenceAOPixelArea", "empty view");
     const size_t n = size_t(view.width) * size_t(view.height);
     ReferenceAO out;
     out.width = view.width;

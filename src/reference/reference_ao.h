@@ -57,7 +57,7 @@ struct ReferenceSettings {
     // pixel with jittered primary rays (box filter, as Cycles).
     bool pixelArea = false;
 
-    void validate() const;  // throws std::invalid_argument naming the bad field
+    void validate() const;  // throws InternalError naming the bad field
 };
 
 // The reference.* keys (spp, seed, target-stderr, min-spp, replicates, bounces,

@@ -5,6 +5,7 @@
 #include "reference/sampler.h"
 #include "reference/sampling_math.h"
 #include "scene/texture_sampler.h"
+#include "core/errors.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -228,12 +229,12 @@ float spotAttenuation(const Light& light, float cosAngle) {
 ReferenceGI referenceGI(const EmbreeScene& scene, const View& view, const ReferenceSettings& settings,
                         bool pixelArea) {
     settings.validate();
-    if (view.width <= 0 || view.height <= 0) throw std::invalid_argument("referenceGI: empty view");
+    if (view.width <= 0 || view.height <= 0) throw InternalError("referenceGI", "empty view");
     const Scene& s = scene.scene();
     for (size_t i = 0; i < s.lights.size(); ++i)
         if (!finite3(s.lights[i].color) || !finite3(s.lights[i].position) || !finite3(s.lights[i].direction))
-            throw std::invalid_argument("referenceGI: light " + std::to_string(i) + " ('" + s.lights[i].name +
-                                        "') is not finite");
+            throw std::runtime_error("referenceGI: light " + std::to_string(i) + " ('" + s.lights[i].name +
+                                     "') is not finite");
     const EmitterTable emitters(s);
     const SampleSchedule schedule = sampleSchedule(settings.spp, settings.replicates);
     const int K = schedule.replicates;

@@ -1,5 +1,7 @@
 #include "scene/camera.h"
 
+#include "core/errors.h"
+
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -54,9 +56,9 @@ std::string describeCameras(const Scene& scene) {
 
 Camera defaultCamera(const Bounds3& bounds, float aspect, float yfovRadians) {
     if (!(aspect > 0.f) || !std::isfinite(aspect))
-        throw std::invalid_argument("defaultCamera: aspect must be > 0");
+        throw InternalError("defaultCamera", "aspect must be > 0");
     if (!(yfovRadians > 0.f && yfovRadians < 3.1415926f))
-        throw std::invalid_argument("defaultCamera: yfov must be in (0, pi)");
+        throw InternalError("defaultCamera", "yfov must be in (0, pi)");
     glm::vec3 center;
     float radius;
     boundingSphere(bounds, &center, &radius);
@@ -78,13 +80,12 @@ Camera defaultCamera(const Bounds3& bounds, float aspect, float yfovRadians) {
 
 Camera resolveCamera(const Scene& scene, const CameraRequest& request, float aspect) {
     if (!(request.fovDeg > 0.f && request.fovDeg < 180.f))
-        throw std::invalid_argument("camera: fov " + std::to_string(request.fovDeg) +
-                                    " degrees not in (0, 180)");
+        throw UsageError("camera: fov " + std::to_string(request.fovDeg) + " degrees not in (0, 180)");
     if (request.hasEye) {
         if (!finite3(request.eye) || !finite3(request.target))
-            throw std::invalid_argument("camera: eye or target is not finite");
+            throw UsageError("camera: eye or target is not finite");
         const glm::vec3 forward = request.target - request.eye;
-        if (!(glm::length(forward) > 0.f)) throw std::invalid_argument("camera: eye and target coincide");
+        if (!(glm::length(forward) > 0.f)) throw UsageError("camera: eye and target coincide");
         Camera c;
         c.name = "explicit";
         c.eye = request.eye;
@@ -103,9 +104,9 @@ Camera resolveCamera(const Scene& scene, const CameraRequest& request, float asp
         size_t index = 0;
         if (parseIndex(request.nameOrIndex, &index) && index < scene.cameras.size())
             return scene.cameras[index];
-        throw std::invalid_argument("camera '" + request.nameOrIndex + "' not found in " +
-                                    (scene.path.empty() ? std::string("the scene") : scene.path) +
-                                    "; available cameras: " + describeCameras(scene));
+        throw UsageError("camera '" + request.nameOrIndex + "' not found in " +
+                         (scene.path.empty() ? std::string("the scene") : scene.path) +
+                         "; available cameras: " + describeCameras(scene));
     }
     if (!scene.cameras.empty()) return scene.cameras.front();
     return defaultCamera(scene.bounds, aspect, glm::radians(request.fovDeg));
@@ -113,7 +114,7 @@ Camera resolveCamera(const Scene& scene, const CameraRequest& request, float asp
 
 glm::vec3 parseVec3(const std::string& text) {
     auto bad = [&](const std::string& why) {
-        return std::invalid_argument("'" + text + "' is not a vector 'x,y,z': " + why);
+        return UsageError("'" + text + "' is not a vector 'x,y,z': " + why);
     };
     glm::vec3 v(0.f);
     size_t start = 0;

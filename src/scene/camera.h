@@ -18,7 +18,7 @@ struct CameraRequest {
     float fovDeg = 45.f;  // vertical field of view, degrees, (0, 180); also used by the default framing
 };
 
-// Precedence: explicit eye/target/fov, then a named or indexed camera (std::invalid_argument listing
+// Precedence: explicit eye/target/fov, then a named or indexed camera (UsageError listing
 // the available cameras when it is not found), then the scene's first camera, then
 // defaultCamera(scene.bounds, aspect). `aspect` = width / height.
 Camera resolveCamera(const Scene& scene, const CameraRequest& request, float aspect);
@@ -28,7 +28,7 @@ Camera resolveCamera(const Scene& scene, const CameraRequest& request, float asp
 // (plus a 5% margin); znear/zfar bracket the sphere.
 Camera defaultCamera(const Bounds3& bounds, float aspect, float yfovRadians = 0.7853982f);
 
-// "x,y,z" -> vec3; throws std::invalid_argument on malformed or non-finite input.
+// "x,y,z" -> vec3; throws UsageError on malformed or non-finite input.
 glm::vec3 parseVec3(const std::string& text);
 
 // "0 'front', 1 'top'" or "(none)", for error messages.

@@ -1,5 +1,6 @@
 #include "scene/scene_builder.h"
 
+#include "core/errors.h"
 #include "scene/gltf_loader.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -108,10 +109,9 @@ int SceneBuilder::addMaterial(const std::string& name, const glm::vec3& baseColo
 int SceneBuilder::addMesh(const std::string& name, const std::vector<glm::vec3>& positions,
                           const std::vector<glm::vec3>& normals, const std::vector<uint32_t>& indices,
                           int material, int mode) {
-    if (positions.empty()) throw std::invalid_argument("SceneBuilder::addMesh '" + name + "': no positions");
+    if (positions.empty()) throw InternalError("SceneBuilder::addMesh", "'" + name + "': no positions");
     if (!normals.empty() && normals.size() != positions.size())
-        throw std::invalid_argument("SceneBuilder::addMesh '" + name +
-                                    "': normal and position counts differ");
+        throw InternalError("SceneBuilder::addMesh", "'" + name + "': normal and position counts differ");
     tinygltf::Primitive prim;
     prim.material = material;
     prim.mode = mode;
@@ -173,8 +173,7 @@ void SceneBuilder::attach(int node, int parent) {
         return;
     }
     if (parent >= int(model.nodes.size()))
-        throw std::invalid_argument("SceneBuilder: parent node " + std::to_string(parent) +
-                                    " does not exist");
+        throw InternalError("SceneBuilder", "parent node " + std::to_string(parent) + " does not exist");
     model.nodes[size_t(parent)].children.push_back(node);
 }
 

@@ -1,5 +1,7 @@
 #include "scene/scene_library.h"
 
+#include "core/errors.h"
+
 #include <glm/gtc/quaternion.hpp>
 
 #include <cmath>
@@ -246,7 +248,7 @@ SceneBuilder makeProjectScene(const std::string& name) {
         if (entry.first == name) return entry.second();
     std::string known;
     for (const auto& entry : registry()) known += (known.empty() ? "" : ", ") + entry.first;
-    throw std::invalid_argument("unknown project scene '" + name + "'; known: " + known);
+    throw UsageError("unknown project scene '" + name + "'; known: " + known);
 }
 
 }  // namespace vct

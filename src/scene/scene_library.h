@@ -29,7 +29,7 @@ namespace vct {
 
 std::vector<std::string> projectSceneNames();
 
-// Throws std::invalid_argument listing the known names when `name` is not one of them.
+// Throws UsageError listing the known names when `name` is not one of them.
 SceneBuilder makeProjectScene(const std::string& name);
 
 }  // namespace vct

@@ -6,6 +6,7 @@
 #include "common/tangent_frame.h"
 #include "cone/cone_march_shared.h"
 #include "cone/cone_set.h"
+#include "core/errors.h"
 
 #include <openvdb/tools/Interpolation.h>
 #include <tbb/blocked_range.h>
@@ -151,9 +152,9 @@ MarchParams marchParams(const SparseVoxelScene& v, const ConeSettings& s) {
 
 void checkVoxels(const SparseVoxelScene& v, const char* what) {
     if (v.opacityLevels.empty() || !v.opacityLevels[0])
-        throw std::invalid_argument(std::string(what) + ": the sparse voxels have no opacity");
+        throw InternalError(what, "the sparse voxels have no opacity");
     if (int(v.opacityLevels.size()) != v.levels)
-        throw std::invalid_argument(std::string(what) + ": the sparse voxels have no levels (buildSparseLevels)");
+        throw InternalError(what, "the sparse voxels have no levels (buildSparseLevels)");
 }
 
 }  // namespace
@@ -163,7 +164,7 @@ std::vector<float> sparseConeAO(const SparseVoxelScene& voxels, const std::vecto
     checkVoxels(voxels, "sparseConeAO");
     settings.validate();
     if (!(radius >= 0.f) || !std::isfinite(radius))
-        throw std::invalid_argument("sparseConeAO: radius " + std::to_string(radius) + " must be finite and >= 0");
+        throw InternalError("sparseConeAO", "radius " + std::to_string(radius) + " must be finite and >= 0");
     const MarchParams mp = marchParams(voxels, settings);
     const float maxDist = radius / voxels.voxelSize;
     const float falloff = (settings.aoMapping == ConeAoMapping::Falloff && maxDist > 0.f)
@@ -189,9 +190,9 @@ std::vector<glm::vec3> sparseConeGI(const SparseVoxelScene& voxels, const std::v
     settings.validate();
     if (!voxels.injected() || voxels.radianceLevels.size() != voxels.opacityLevels.size() ||
         voxels.normalLevels.size() != voxels.opacityLevels.size())
-        throw std::invalid_argument("sparseConeGI: the sparse voxels have no radiance (inject first)");
+        throw InternalError("sparseConeGI", "the sparse voxels have no radiance (inject first)");
     if (!(sky >= 0.f) || !std::isfinite(sky))
-        throw std::invalid_argument("sparseConeGI: sky radiance " + std::to_string(sky) + " must be finite and >= 0");
+        throw InternalError("sparseConeGI", "sky radiance " + std::to_string(sky) + " must be finite and >= 0");
     const MarchParams mp = marchParams(voxels, settings);
     // GI cones run until they leave the grid: twice the box diagonal bounds every path.
     const float maxDist = 2.f * glm::length(glm::vec3(voxels.resolution));

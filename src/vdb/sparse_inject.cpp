@@ -4,6 +4,7 @@
 // Radiance is per area, so nothing scales with the voxel size. The walk is hierarchical: a
 // DDA over 8^3 leaf blocks (OpenVDB's math::DDA) skips empty blocks, and a voxel DDA runs only
 // inside blocks that hold a leaf; it crosses the same voxels as the GPU's Amanatides-Woo walk.
+#include "core/errors.h"
 #include "vdb/sparse_detail.h"
 
 #include <openvdb/math/DDA.h>
@@ -101,14 +102,14 @@ glm::vec3 lightIrradiance(const InjectContext& ctx, const Light& light, const gl
 
 void injectSparseRadiance(SparseVoxelScene& voxels, const Scene& scene, float shadowOffsetVoxels) {
     if (!voxels.opacity || !voxels.albedo || !voxels.normal || !voxels.emission)
-        throw std::invalid_argument("injectSparseRadiance: the scene is not voxelized");
+        throw InternalError("injectSparseRadiance", "the scene is not voxelized");
     if (!std::isfinite(shadowOffsetVoxels) || shadowOffsetVoxels < 0.f)
-        throw std::invalid_argument("injectSparseRadiance: shadow offset must be finite and >= 0");
+        throw InternalError("injectSparseRadiance", "shadow offset must be finite and >= 0");
     for (const Light& l : scene.lights)
         if (!std::isfinite(l.color.x + l.color.y + l.color.z) ||
             !std::isfinite(l.position.x + l.position.y + l.position.z) ||
             !std::isfinite(l.direction.x + l.direction.y + l.direction.z))
-            throw std::invalid_argument("injectSparseRadiance: light '" + l.name + "' has a non-finite value");
+            throw std::runtime_error("injectSparseRadiance: light '" + l.name + "' has a non-finite value");
     const auto t0 = std::chrono::steady_clock::now();
     const InjectContext ctx{&scene, glm::vec3(voxels.resolution), voxels.origin, voxels.voxelSize,
                             shadowOffsetVoxels};

@@ -8,6 +8,7 @@
 // sums its children in a fixed order: the levels are deterministic.
 #include "vdb/sparse_detail.h"
 #include "cone/cone_bounce.h"
+#include "core/errors.h"
 #include "voxelize/voxel_settings.h"
 
 #include <openvdb/tools/Prune.h>
@@ -134,7 +135,7 @@ size_t product(const glm::ivec3& v) { return size_t(v.x) * size_t(v.y) * size_t(
 }  // namespace
 
 void buildSparseLevels(SparseVoxelScene& voxels) {
-    if (!voxels.opacity) throw std::invalid_argument("buildSparseLevels: the scene is not voxelized");
+    if (!voxels.opacity) throw InternalError("buildSparseLevels", "the scene is not voxelized");
     const auto t0 = std::chrono::steady_clock::now();
     voxels.opacityLevels.resize(1);
     if (voxels.injected()) voxels.radianceLevels.resize(1);
@@ -171,7 +172,7 @@ void updateSparseMemoryStats(SparseVoxelScene& voxels) {
 SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject, float sky,
                                    const ParamMap& params) {
     if (!std::isfinite(sky) || sky < 0.f)
-        throw std::invalid_argument("buildSparseVoxels: sky radiance must be finite and >= 0");
+        throw InternalError("buildSparseVoxels", "sky radiance must be finite and >= 0");
     // The GPU path's keys, read for parity (the sparse grids always hold float32).
     const float offset = voxelSettings().read(params).injectOffset;
     refuseVctBounces(params, inject, "--backend vdb");  // the sparse path injects direct light only

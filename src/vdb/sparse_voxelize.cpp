@@ -4,6 +4,7 @@
 // is the occupied set, and each occupied voxel adds up the sums of every thread. The sums are
 // integers (the GPU's fixed-point scales), so the total does not depend on which thread saw
 // which triangle: the grids are bit-identical for any thread count and schedule.
+#include "core/errors.h"
 #include "scene/texture_sampler.h"
 #include "vdb/sparse_detail.h"
 #include "vdb/triangle_box.h"
@@ -176,17 +177,17 @@ void checkScene(const Scene& scene) {
     for (size_t i = 0; i < scene.positions.size(); ++i) {
         const glm::vec3& p = scene.positions[i];
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-            throw std::invalid_argument("voxelizeSparse: vertex " + std::to_string(i) + " is not finite");
+            throw std::runtime_error("voxelizeSparse: vertex " + std::to_string(i) + " is not finite");
     }
     for (size_t t = 0; t < scene.triangles.size(); ++t)
         for (int k = 0; k < 3; ++k)
             if (scene.triangles[t][k] >= scene.positions.size())
-                throw std::invalid_argument("voxelizeSparse: triangle " + std::to_string(t) +
-                                            " indexes a missing vertex");
+                throw std::runtime_error("voxelizeSparse: triangle " + std::to_string(t) +
+                                         " indexes a missing vertex");
     for (const Material& m : scene.materials)
         for (int c = 0; c < 3; ++c)
             if (!std::isfinite(m.emissiveFactor[c]))
-                throw std::invalid_argument("voxelizeSparse: material '" + m.name + "' emission is not finite");
+                throw std::runtime_error("voxelizeSparse: material '" + m.name + "' emission is not finite");
 }
 
 }  // namespace
@@ -244,7 +245,7 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, int voxelRes) {
             auto& nrLeaf = normalLeaves.leaf(li);
             auto& emLeaf = emissionLeaves.leaf(li);
             if (alLeaf.origin() != opLeaf.origin() || emLeaf.origin() != opLeaf.origin())
-                throw std::logic_error("voxelizeSparse: leaf order differs between grids of one topology");
+                throw InternalError("voxelizeSparse", "leaf order differs between grids of one topology");
             for (size_t k = 0; k < threads.size(); ++k)
                 threadLeaves[k] = threads[k]->slots.probeConstLeaf(opLeaf.origin());
             for (auto it = opLeaf.cbeginValueOn(); it; ++it) {

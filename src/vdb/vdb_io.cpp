@@ -1,5 +1,6 @@
 #include "vdb/vdb_io.h"
 
+#include "core/errors.h"
 #include "vdb/sparse_detail.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -30,7 +31,7 @@ typename GridT::Ptr readTyped(openvdb::io::File& file, const std::string& name, 
 void writeVdb(const SparseVoxelScene& voxels, const std::string& path, const std::string& sceneName) {
     ensureOpenVdb();
     if (!voxels.opacity || !voxels.albedo || !voxels.normal || !voxels.emission)
-        throw std::invalid_argument("writeVdb: the sparse voxels are incomplete (voxelize first)");
+        throw InternalError("writeVdb", "the sparse voxels are incomplete (voxelize first)");
     openvdb::GridPtrVec grids;
     auto add = [&](const openvdb::GridBase::Ptr& g, int level) {
         g->insertMeta("level", openvdb::Int32Metadata(level));

@@ -1,5 +1,6 @@
 #include "voxelize/voxelize.h"
 
+#include "core/errors.h"
 #include "gl/program_cache.h"
 #include "voxelize/voxel_gl.h"
 #include "voxelize/voxel_programs.h"
@@ -41,12 +42,12 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
                     const ParamMap& params, PassTimer& timer, const std::vector<const VoxelGrid*>& outerLevels,
                     const std::string& scopeName) {
     if (!grid.opacity || !grid.albedo || !grid.normal || !grid.emission)
-        throw std::invalid_argument("injectRadiance: the grid is not voxelized");
+        throw InternalError("injectRadiance", "the grid is not voxelized");
     for (const Light& l : scene.lights)
         if (!std::isfinite(l.color.x + l.color.y + l.color.z) ||
             !std::isfinite(l.position.x + l.position.y + l.position.z) ||
             !std::isfinite(l.direction.x + l.direction.y + l.direction.z))
-            throw std::invalid_argument("injectRadiance: light '" + l.name + "' has a non-finite value");
+            throw std::runtime_error("injectRadiance: light '" + l.name + "' has a non-finite value");
     const VoxelSettings settings = voxelSettings().read(params);
     const float offset = settings.injectOffset;
     const bool useFloat = settings.precision == VoxelPrecision::Float ||
@@ -54,11 +55,11 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
     const GLenum format = useFloat ? GL_RGBA32F : GL_RGBA16F;
     constexpr int maxOuter = 7, outerUnit = 20;  // clear of the scene textures (unit 8)
     if (int(outerLevels.size()) > maxOuter)
-        throw std::invalid_argument("injectRadiance: more than 7 outer clipmap levels");
+        throw InternalError("injectRadiance", "more than 7 outer clipmap levels");
     for (const VoxelGrid* o : outerLevels)
         if (!o || !o->opacity || o->resolution != glm::ivec3(o->resolution.x) ||
             o->resolution.x != outerLevels.front()->resolution.x)
-            throw std::invalid_argument("injectRadiance: outer levels must be voxelized cubic grids of one size");
+            throw InternalError("injectRadiance", "outer levels must be voxelized cubic grids of one size");
     const GLuint p = cachedProgram(injectProgramKey(format, int(outerLevels.size())));
     const glm::ivec3 res = grid.resolution;
     grid.radiance = createTexture3D(format, res.x, res.y, res.z, grid.levels);

@@ -1,5 +1,6 @@
 #include "voxelize/voxelize.h"
 
+#include "core/errors.h"
 #include "gl/program_cache.h"
 #include "voxelize/voxel_gl.h"
 #include "voxelize/voxel_programs.h"
@@ -75,7 +76,7 @@ AnisoPrograms buildAnisoPrograms(const VoxelGrid& grid) {
 
 void buildAnisotropicMips(VoxelGrid& grid, const AnisoPrograms& programs) {
     const int anisoLevels = grid.levels - 1;
-    if (anisoLevels < 1) throw std::invalid_argument("voxel grid too small for anisotropic mips");
+    if (anisoLevels < 1) throw InternalError("buildAnisotropicMips", "voxel grid too small for anisotropic mips");
     const bool hasRadiance = bool(grid.radiance);
     const GLenum baseFormat = anisoBaseFormat(grid), anisoFormat = anisoFormatFor(baseFormat);
 
@@ -107,7 +108,7 @@ void buildAnisotropicMips(VoxelGrid& grid, const AnisoPrograms& programs) {
 }  // namespace
 
 void buildMips(VoxelGrid& grid, bool anisotropic, PassTimer& timer, const std::string& scopeName) {
-    if (!grid.opacity) throw std::invalid_argument("buildMips: the grid has no opacity (voxelize first)");
+    if (!grid.opacity) throw InternalError("buildMips", "the grid has no opacity (voxelize first)");
     const GLuint iso = isotropicMipProgram(grid);
     AnisoPrograms aniso;
     if (anisotropic) aniso = buildAnisoPrograms(grid);

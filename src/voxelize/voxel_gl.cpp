@@ -1,5 +1,6 @@
 #include "voxelize/voxel_gl.h"
 
+#include "core/errors.h"
 #include "voxelize/voxelize.h"
 
 #include <algorithm>
@@ -40,7 +41,7 @@ std::string glslImageFormat(GLenum internalFormat) {
     case GL_RGBA16F: return "rgba16f";
     case GL_RGBA32F: return "rgba32f";
     case GL_R32UI: return "r32ui";
-    default: throw std::invalid_argument("voxel grid: unsupported texture format " + std::to_string(internalFormat));
+    default: throw InternalError("voxel grid", "unsupported texture format " + std::to_string(internalFormat));
     }
 }
 

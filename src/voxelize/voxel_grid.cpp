@@ -1,5 +1,7 @@
 #include "voxelize/voxel_grid.h"
 
+#include "core/errors.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -10,8 +12,9 @@ namespace vct {
 
 VoxelGrid makeGridLayout(const Bounds3& bounds, int maxResolution) {
     if (maxResolution < 4 || maxResolution > 1024)
-        throw std::invalid_argument("voxel resolution " + std::to_string(maxResolution) + " out of range [4, 1024]");
-    if (bounds.empty()) throw std::invalid_argument("cannot fit a voxel grid to empty bounds");
+        throw InternalError("makeGridLayout",
+                            "voxel resolution " + std::to_string(maxResolution) + " out of range [4, 1024]");
+    if (bounds.empty()) throw InternalError("makeGridLayout", "cannot fit a voxel grid to empty bounds");
     VoxelGrid g;
     // One voxel of padding on each side: the longest axis spans (maxResolution - 2) voxels.
     float extent = std::max(bounds.maxExtent(), 1e-30f);
@@ -29,11 +32,11 @@ VoxelGrid makeGridLayout(const Bounds3& bounds, int maxResolution) {
 
 VoxelGrid makeGridLayout(const glm::vec3& origin, float voxelSize, const glm::ivec3& resolution) {
     if (!(voxelSize > 0.f) || !std::isfinite(voxelSize))
-        throw std::invalid_argument("voxel grid: voxel size " + std::to_string(voxelSize) + " must be finite and > 0");
+        throw InternalError("makeGridLayout", "voxel size " + std::to_string(voxelSize) + " must be finite and > 0");
     if (glm::any(glm::lessThan(resolution, glm::ivec3(1))) || glm::any(glm::greaterThan(resolution, glm::ivec3(1024))))
-        throw std::invalid_argument("voxel grid: resolution outside [1, 1024]");
+        throw InternalError("makeGridLayout", "resolution outside [1, 1024]");
     for (int a = 0; a < 3; ++a)
-        if (!std::isfinite(origin[a])) throw std::invalid_argument("voxel grid: origin is not finite");
+        if (!std::isfinite(origin[a])) throw InternalError("makeGridLayout", "origin is not finite");
     VoxelGrid g;
     g.resolution = resolution;
     g.voxelSize = voxelSize;

@@ -1,6 +1,7 @@
 #include "voxelize/voxelize.h"
 
 #include "common/scene_shared.h"
+#include "core/errors.h"
 #include "gl/program_cache.h"
 #include "gl/program_limits.h"
 #include "voxelize/voxel_gl.h"
@@ -28,7 +29,7 @@ float maxMaterialEmission(const GpuScene& scene) {
     for (const gpu::GpuMaterial& mat : materials) {
         for (int c = 0; c < 3; ++c) {
             if (!std::isfinite(mat.emissive[c]))
-                throw std::invalid_argument("voxelize: material emission is not finite");
+                throw std::runtime_error("voxelize: material emission is not finite");
             m = std::max(m, mat.emissive[c]);
         }
     }
@@ -76,7 +77,7 @@ VoxelGrid voxelizeScene(const GpuScene& scene, const Bounds3& region, int voxelR
                         PassTimer& timer) {
     for (int a = 0; a < 3; ++a)
         if (!std::isfinite(region.min[a]) || !std::isfinite(region.max[a]))
-            throw std::invalid_argument("voxelize: region bounds are not finite");
+            throw InternalError("voxelizeScene", "region bounds are not finite");
     return voxelizeGrid(scene, makeGridLayout(region, voxelRes), params, timer);
 }
 
@@ -90,11 +91,11 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     const double voxels = double(grid.resolution.x) * grid.resolution.y * grid.resolution.z;
     const double needBytes = 66.0 * voxels, haveBytes = double(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
     if (haveBytes > 0.0 && needBytes > 0.5 * haveBytes)
-        throw std::invalid_argument("voxel grid " + std::to_string(grid.resolution.x) + "x" +
-                                    std::to_string(grid.resolution.y) + "x" + std::to_string(grid.resolution.z) +
-                                    " needs about " + std::to_string(int(needBytes / 1e9)) + " GB, more than half of "
-                                    "this machine's " + std::to_string(int(haveBytes / 1e9)) +
-                                    " GB: lower --voxel-res or use vct.clipmap.levels");
+        throw std::runtime_error("voxel grid " + std::to_string(grid.resolution.x) + "x" +
+                                 std::to_string(grid.resolution.y) + "x" + std::to_string(grid.resolution.z) +
+                                 " needs about " + std::to_string(int(needBytes / 1e9)) + " GB, more than half of "
+                                 "this machine's " + std::to_string(int(haveBytes / 1e9)) +
+                                 " GB: lower --voxel-res or use vct.clipmap.levels");
     const VoxelPrecision precision = voxelSettings().read(params).precision;
     const float maxEmission = maxMaterialEmission(scene);
     const bool hasEmission = maxEmission > 0.f;

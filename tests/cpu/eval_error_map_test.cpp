@@ -3,6 +3,7 @@
 
 #include <limits>
 
+#include "core/errors.h"
 #include "eval/error_map.h"
 
 namespace vct {
@@ -48,15 +49,15 @@ TEST(EvalErrorMap, LegendRunsBlueWhiteRed) {
     EXPECT_GT(legend.at(100, 4, 0), legend.at(100, 4, 2) + 0.4f);  // right: red
     for (int c = 0; c < 3; ++c) EXPECT_GT(legend.at(50, 0, c), 0.99f);  // centre column: white
     for (int c = 0; c < 3; ++c) EXPECT_EQ(legend.at(10, 0, c), legend.at(10, 7, c));  // constant columns
-    EXPECT_THROW(falseColorLegend(0, 8, 0.05), std::invalid_argument);
-    EXPECT_THROW(falseColorLegend(8, 8, 0.0), std::invalid_argument);
+    EXPECT_THROW(falseColorLegend(0, 8, 0.05), InternalError);
+    EXPECT_THROW(falseColorLegend(8, 8, 0.0), InternalError);
 }
 
 TEST(EvalErrorMap, RejectsBadInput) {
     Image ref(2, 2, 1, 0.f), est = ref;
-    EXPECT_THROW(falseColorError(est, ref, -1.0), std::invalid_argument);
+    EXPECT_THROW(falseColorError(est, ref, -1.0), InternalError);
     est.at(1, 1) = std::numeric_limits<float>::quiet_NaN();
-    EXPECT_THROW(falseColorError(est, ref, 0.1), std::invalid_argument);
+    EXPECT_THROW(falseColorError(est, ref, 0.1), InternalError);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // area on the floor), never produced by the code under test.
 #include "reference/reference_ao.h"
 #include "reference/scene_shapes.h"
+#include "core/errors.h"
 #include "core/params.h"
 #include "core/view.h"
 
@@ -88,7 +89,7 @@ TEST(ReferenceAO, SettingsFromParams) {
     EXPECT_EQ(s.bounces, 4);  // untouched default
     ParamMap bad;
     bad.set("reference.spp=0");
-    EXPECT_THROW(referenceSettingsFromParams(bad), std::invalid_argument);
+    EXPECT_THROW(referenceSettingsFromParams(bad), UsageError);
 }
 
 TEST(ReferenceAO, InvalidPointsAreSky) {
@@ -100,9 +101,9 @@ TEST(ReferenceAO, InvalidPointsAreSky) {
     EXPECT_EQ(r.ao[1], 1.f);
     EXPECT_EQ(r.standardError[1], 0.f);
     pts[0].position.x = std::nanf("");
-    EXPECT_THROW(referenceAO(s, pts, quiet(1.f, 16)), std::invalid_argument);
+    EXPECT_THROW(referenceAO(s, pts, quiet(1.f, 16)), InternalError);
     ReferenceSettings bad = quiet(-1.f, 16);
-    EXPECT_THROW(referenceAO(s, pts, bad), std::invalid_argument);
+    EXPECT_THROW(referenceAO(s, pts, bad), InternalError);
 }
 
 // Floor point under a centred square occluder (half-size a, height h).

@@ -1,5 +1,6 @@
 // The project scenes: they load (from the builder and from written files), and the off-screen study
 // scenes do what their names claim, checked by brute-force ray casting through the camera.
+#include "core/errors.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_library.h"
 
@@ -118,7 +119,7 @@ TEST(SceneLibrary, EveryProjectSceneLoadsFromBuilderAndFiles) {
     }
     std::error_code ec;
     fs::remove_all(dir, ec);
-    EXPECT_THROW(vct::makeProjectScene("no_such_scene"), std::invalid_argument);
+    EXPECT_THROW(vct::makeProjectScene("no_such_scene"), vct::UsageError);
 }
 
 TEST(SceneLibrary, CornellBoxHasEmitterPointLightAndCamera) {

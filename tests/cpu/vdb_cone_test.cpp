@@ -1,6 +1,7 @@
 // The CPU cone tracer over sparse voxels (src/vdb/sparse_cone.h) against closed forms: an open
 // floor is unoccluded, a white furnace (every surface emits Le, sky Le) returns albedo * Le
 // whatever the geometry, and a low ceiling closes the hemisphere.
+#include "core/errors.h"
 #include "support/test_scenes.h"
 #include "vdb/sparse_cone.h"
 
@@ -145,10 +146,10 @@ TEST(VdbCone, RejectsMissingInputs) {
     ParamMap params;
     SparseVoxelScene v = buildSparseVoxels(s, 16, false, 1.f, params);
     auto pts = floorPoints({{0, 0, 0}});
-    EXPECT_THROW(sparseConeGI(v, pts, 1.f, defaults()), std::invalid_argument);
-    EXPECT_THROW(sparseConeAO(v, pts, -1.f, defaults()), std::invalid_argument);
+    EXPECT_THROW(sparseConeGI(v, pts, 1.f, defaults()), InternalError);
+    EXPECT_THROW(sparseConeAO(v, pts, -1.f, defaults()), InternalError);
     SparseVoxelScene bare = voxelizeSparse(s, 16);  // no levels
-    EXPECT_THROW(sparseConeAO(bare, pts, 1.f, defaults()), std::invalid_argument);
+    EXPECT_THROW(sparseConeAO(bare, pts, 1.f, defaults()), InternalError);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // Sparse voxelization, injection and levels (src/vdb) against an independent double-precision
 // overlap test, closed forms, and an independent dense implementation of the level rule.
+#include "core/errors.h"
 #include "support/test_scenes.h"
 #include "vdb/sparse_voxels.h"
 
@@ -289,14 +290,14 @@ TEST(VdbVoxelize, LevelsMatchDenseBoxFilter) {
 TEST(VdbVoxelize, RejectsBadInput) {
     Scene s = floorAndBox();
     ParamMap params;
-    EXPECT_THROW(buildSparseVoxels(s, 2, false, 1.f, params), std::invalid_argument);
-    EXPECT_THROW(buildSparseVoxels(s, 32, true, -1.f, params), std::invalid_argument);
+    EXPECT_THROW(buildSparseVoxels(s, 2, false, 1.f, params), InternalError);
+    EXPECT_THROW(buildSparseVoxels(s, 32, true, -1.f, params), InternalError);
     ParamMap bounces;
     bounces.set("vct.bounces", "1");
-    EXPECT_THROW(buildSparseVoxels(s, 32, true, 1.f, bounces), std::invalid_argument);
+    EXPECT_THROW(buildSparseVoxels(s, 32, true, 1.f, bounces), UsageError);
     Scene bad = s;
     bad.positions[0].x = std::nanf("");
-    EXPECT_THROW(voxelizeSparse(bad, 32), std::invalid_argument);
+    EXPECT_THROW(voxelizeSparse(bad, 32), std::runtime_error);
 }
 
 }  // namespace

@@ -387,7 +387,7 @@ TEST(ScreenSpaceAo, BilateralWeightsSumToOneForEveryRadius) {
             }
             EXPECT_NEAR(sum, 1.0, 1e-6) << "radius " << radius << " sigma " << sigma;
         }
-    EXPECT_THROW(bilateralGaussianWeights(gpu::BLUR_MAX_RADIUS + 1, 1.f), std::invalid_argument);
+    EXPECT_THROW(bilateralGaussianWeights(gpu::BLUR_MAX_RADIUS + 1, 1.f), InternalError);
 }
 
 TEST(ScreenSpaceAo, BlursLeaveAConstantImageUnchanged) {

@@ -3,6 +3,7 @@
 // number of levels.
 #include "clipmap/clipmap.h"
 #include "cone/clipmap_shared.h"
+#include "core/errors.h"
 #include "gl/context.h"
 #include "render/renderer.h"
 #include "support/test_scenes.h"
@@ -42,8 +43,8 @@ TEST(ClipmapLayout, LevelsNestExactlyAndCoverTheRegion) {
             }
         }
     }
-    EXPECT_THROW(computeClipmapLayout(region, glm::vec3(0.f), 9, 32), std::invalid_argument);
-    EXPECT_THROW(computeClipmapLayout(Bounds3{}, glm::vec3(0.f), 2, 32), std::invalid_argument);
+    EXPECT_THROW(computeClipmapLayout(region, glm::vec3(0.f), 9, 32), InternalError);
+    EXPECT_THROW(computeClipmapLayout(Bounds3{}, glm::vec3(0.f), 2, 32), InternalError);
 }
 
 namespace {

@@ -6,6 +6,7 @@
 #include "cone/cone_settings.h"
 #include "cone/cone_shared.h"
 #include "cone/cone_trace.h"
+#include "core/errors.h"
 #include "gl/context.h"
 #include "gl/readback.h"
 
@@ -278,7 +279,7 @@ TEST(ConeSet, WeightsIntegrateTheCosineLobe) {
         // Closed form: the mean of cos(theta) under the cosine lobe is (1/pi) int cos^2 dw = 2/3.
         EXPECT_NEAR(meanCos, 2.f / 3.f, 0.05f) << n << " cones";
     }
-    EXPECT_THROW(diffuseConeSet(8), std::invalid_argument);
+    EXPECT_THROW(diffuseConeSet(8), InternalError);
 }
 
 TEST(ConeAniso, WeightsSumToOne) {
@@ -323,11 +324,11 @@ TEST(ConeSettings, DefaultsRangesAndErrors) {
                             "vct.ao-mapping=cubic", "vct.step=nan"}) {
         ParamMap p;
         p.set(bad);
-        EXPECT_THROW(readConeSettings(p), std::invalid_argument) << bad;
+        EXPECT_THROW(readConeSettings(p), UsageError) << bad;
     }
     ConeSettings s;
     s.apertureDeg = 0.5f;
-    EXPECT_THROW(s.validate(), std::invalid_argument);
+    EXPECT_THROW(s.validate(), InternalError);
 }
 
 TEST(ConeTrace, OpenPlaneIsOpenAndSeesTheSky) {
@@ -575,15 +576,15 @@ TEST(ConeTrace, RejectsBadInput) {
     GBuffer gb = makeGBuffer(s, {{{16.f, 4.f, 16.f}, kUp}});
     PassTimer timer;
     ConeSettings c;
-    EXPECT_THROW(coneTraceAO(grid, gb, gbufView(), -1.f, c, timer), std::invalid_argument);
-    EXPECT_THROW(coneTraceAO(grid, gb, gbufView(), NAN, c, timer), std::invalid_argument);
-    EXPECT_THROW(coneTraceGI(grid, gb, gbufView(), 1.f, c, timer), std::invalid_argument);  // no radiance
-    EXPECT_THROW(coneTraceAO(grid, gb, makeView(Camera{}, 16, 8), 1.f, c, timer), std::invalid_argument);
-    EXPECT_THROW(rayMarchVoxels(grid, gbufView(), "normal", 0, timer), std::invalid_argument);
-    EXPECT_THROW(rayMarchVoxels(grid, gbufView(), "opacity", grid.levels, timer), std::invalid_argument);
-    EXPECT_THROW(rayMarchVoxels(grid, gbufView(), "radiance", 0, timer), std::invalid_argument);
+    EXPECT_THROW(coneTraceAO(grid, gb, gbufView(), -1.f, c, timer), InternalError);
+    EXPECT_THROW(coneTraceAO(grid, gb, gbufView(), NAN, c, timer), InternalError);
+    EXPECT_THROW(coneTraceGI(grid, gb, gbufView(), 1.f, c, timer), InternalError);  // no radiance
+    EXPECT_THROW(coneTraceAO(grid, gb, makeView(Camera{}, 16, 8), 1.f, c, timer), InternalError);
+    EXPECT_THROW(rayMarchVoxels(grid, gbufView(), "normal", 0, timer), InternalError);
+    EXPECT_THROW(rayMarchVoxels(grid, gbufView(), "opacity", grid.levels, timer), InternalError);
+    EXPECT_THROW(rayMarchVoxels(grid, gbufView(), "radiance", 0, timer), InternalError);
     c.coneCount = 7;
-    EXPECT_THROW(coneTraceAO(grid, gb, gbufView(), 1.f, c, timer), std::invalid_argument);
+    EXPECT_THROW(coneTraceAO(grid, gb, gbufView(), 1.f, c, timer), InternalError);
     GlContext::shared().checkErrors("bad input");
 }
 
