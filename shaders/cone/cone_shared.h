@@ -18,7 +18,7 @@ VCT_BEGIN_NAMESPACE
 // voxels (texture cache on a GPU, SIMD lanes on llvmpipe).
 VCT_CONST int CONE_LOCAL_SIZE = 8;
 
-VCT_CONST int CONE_MAX_CONES = 16;
+VCT_CONST int CONE_MAX_CONES = 64;
 // Safety bound on samples per cone (apertures near 1 degree step one half voxel at a time):
 // 1024 half-voxel steps cross a 512^3 grid's diagonal.
 VCT_CONST int CONE_MAX_STEPS = 1024;
@@ -49,6 +49,11 @@ VCT_CONST int CONE_CHANNEL_RADIANCE = 2;
 VCT_CONST int CONE_DEFAULT_COUNT = 6;
 VCT_CONST float CONE_DEFAULT_APERTURE_6 = 60.0;   // degrees: the 6 cones tile the hemisphere
 VCT_CONST float CONE_DEFAULT_APERTURE_16 = 50.0;  // degrees: compix / WickedEngine's 16-cone set
+// The finer spiral sets keep the 16-cone set's overlap: N cones of solid angle 1.5 * 2 pi / N,
+// i.e. cos(aperture / 2) = 1 - 1.5 / N, so the cone set refines toward the cosine integral
+// (each cone's weight 1 / N, its cap shrinking with N).
+VCT_CONST float CONE_DEFAULT_APERTURE_32 = 35.0;
+VCT_CONST float CONE_DEFAULT_APERTURE_64 = 25.0;
 // beta = 0.5: two samples per footprint diameter, so a one-voxel wall is always sampled
 // within its trilinear support; 1.0 halves the cost and starts to skip thin walls.
 VCT_CONST float CONE_DEFAULT_STEP = 0.5;

@@ -119,12 +119,13 @@ int runCompare(const CompareOptions& o) {
     s.progress = progressLine;
     GlContext::shared(parseGlDevice(o.render.glDevice));
     nlohmann::json doc = runComparison(scene, s);
-    std::cout << "label                                   time_ms     rmse   roi_rmse\n";
+    std::cout << "label                                   time_ms     rmse   roi_rmse  cone_err  voxel_err\n";
+    auto cell = [](const nlohmann::json& j) { return j.is_null() ? std::string("-") : std::to_string(j.get<double>()); };
     for (const auto& r : doc["records"]) {
-        char line[256];
-        std::snprintf(line, sizeof line, "%-36s %10.2f %8.4f %10s\n", r["label"].get<std::string>().c_str(),
-                      r["time_ms"].get<double>(), r["rmse"].get<double>(),
-                      r["roi_rmse"].is_null() ? "-" : std::to_string(r["roi_rmse"].get<double>()).c_str());
+        char line[320];
+        std::snprintf(line, sizeof line, "%-36s %10.2f %8.4f %10s %9s %10s\n", r["label"].get<std::string>().c_str(),
+                      r["time_ms"].get<double>(), r["rmse"].get<double>(), cell(r["roi_rmse"]).c_str(),
+                      cell(r["cone_error_rmse"]).c_str(), cell(r["voxel_error_rmse"]).c_str());
         std::cout << line;
     }
     std::cout << "wrote " << o.outDir << "/results.json and results.csv\n";

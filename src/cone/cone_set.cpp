@@ -39,8 +39,8 @@ std::vector<glm::vec4> vogelDisc(int n) {
 
 std::vector<glm::vec4> diffuseConeSet(int coneCount) {
     if (coneCount == 6) return villegasSix();
-    if (coneCount == 16) return vogelDisc(16);
-    throw InternalError("diffuseConeSet", std::to_string(coneCount) + " cones (expected 6 or 16)");
+    if (coneCount == 16 || coneCount == 32 || coneCount == 64) return vogelDisc(coneCount);
+    throw InternalError("diffuseConeSet", std::to_string(coneCount) + " cones (expected 6, 16, 32 or 64)");
 }
 
 }  // namespace vct

@@ -13,8 +13,10 @@ namespace vct {
 // 6: Villegas 2016 - one cone along the normal, five at 60 degrees from it. With 60-degree
 //    cones the central one covers the cap theta < 30 deg, whose cosine weight is
 //    sin^2(30 deg) = 1/4; the five others split the rest, 3/20 each.
-// 16: a Vogel spiral on the unit disc lifted to the hemisphere (Malley's method): each point
-//    stands for an equal area of the disc, i.e. an equal share of the cosine lobe, 1/16.
+// 16, 32, 64: a Vogel spiral on the unit disc lifted to the hemisphere (Malley's method): each
+//    point stands for an equal area of the disc, i.e. an equal share of the cosine lobe, 1/N;
+//    as N grows with the cones narrowing (cone/cone_shared.h), the set's sum tends to the
+//    cosine integral, so refining cones with voxels drives the total error down.
 std::vector<glm::vec4> diffuseConeSet(int coneCount);
 
 }  // namespace vct

@@ -16,11 +16,14 @@ void require(bool ok, const std::string& what) {
 float defaultConeAperture(int coneCount) {
     if (coneCount == 6) return gpu::CONE_DEFAULT_APERTURE_6;
     if (coneCount == 16) return gpu::CONE_DEFAULT_APERTURE_16;
-    throw InternalError("defaultConeAperture", "vct.cones = " + std::to_string(coneCount) + ": expected 6 or 16");
+    if (coneCount == 32) return gpu::CONE_DEFAULT_APERTURE_32;
+    if (coneCount == 64) return gpu::CONE_DEFAULT_APERTURE_64;
+    throw InternalError("defaultConeAperture", "vct.cones = " + std::to_string(coneCount) + ": expected 6, 16, 32 or 64");
 }
 
 void ConeSettings::validate() const {
-    require(coneCount == 6 || coneCount == 16, "coneCount " + std::to_string(coneCount) + " is not 6 or 16");
+    require(coneCount == 6 || coneCount == 16 || coneCount == 32 || coneCount == 64,
+            "coneCount " + std::to_string(coneCount) + " is not 6, 16, 32 or 64");
     require(std::isfinite(apertureDeg) && apertureDeg > 1.f && apertureDeg < 179.f,
             "apertureDeg " + std::to_string(apertureDeg) + " outside (1, 179)");
     require(std::isfinite(stepFactor) && stepFactor >= 0.05f && stepFactor <= 2.f,
@@ -34,10 +37,12 @@ void ConeSettings::validate() const {
 const SettingsTable<ConeSettings>& coneSettings() {
     static const auto table =
         SettingsTable<ConeSettings>()
-            .choice("vct.cones", &ConeSettings::coneCount, {{"6", 6}, {"16", 16}},
-                    "diffuse cone set: 6 (6 x 60 deg, Villegas) or 16 (16 x 50 deg, cosine-stratified spiral)")
+            .choice("vct.cones", &ConeSettings::coneCount, {{"6", 6}, {"16", 16}, {"32", 32}, {"64", 64}},
+                    "diffuse cone set: 6 (6 x 60 deg, Villegas), or 16, 32, 64 cones of a cosine-stratified spiral "
+                    "(50, 35, 25 deg)")
             .real("vct.aperture", &ConeSettings::apertureDeg,
-                  [](const ConeSettings& s) { return defaultConeAperture(s.coneCount); }, "60 (6 cones), 50 (16)", 1.f,
+                  [](const ConeSettings& s) { return defaultConeAperture(s.coneCount); },
+                  "60 (6 cones), 50 (16), 35 (32), 25 (64)", 1.f,
                   179.f, "full cone aperture in degrees, open range (1, 179)")
             .check([](const ConeSettings& s) {
                 if (!(s.apertureDeg > 1.f && s.apertureDeg < 179.f))

@@ -128,6 +128,10 @@ struct Method {
     // Lights the image itself (a path tracer): it writes kBeauty and kDirect, and the
     // renderer runs no shadow, direct or composite pass.
     bool lightsTheImage = false;
+    // Traces cones (vct.cones, vct.aperture): its AO converges, as its voxels refine, to the
+    // cone model of that cone set (--ao reference --param reference.cone-model=1), and
+    // comparisons split its error into the cone set's and the voxels'.
+    bool tracesCones = false;
     std::function<std::vector<SettingDoc>()> settings;  // every --param key it reads
     std::function<std::vector<ProgramKey>()> programs;  // every GL program it can build
     std::function<void(const PlanContext&, PassDeclarations&)> declare;

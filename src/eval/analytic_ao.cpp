@@ -90,8 +90,9 @@ double analyticConeModelAo(const AnalyticOccluders& occ, const glm::vec3& p, con
         const glm::vec3 axis = glm::normalize(frame * glm::vec3(cone));
         if (glm::dot(axis, n) <= 0.f) continue;  // closed, as the cone passes close it
         const glm::mat3 coneFrame = gpu::frame_fromZ(axis);
-        // Uniform in solid angle: cos(theta) uniform in [cos(half aperture), 1].
-        double above = 0.0, visible = 0.0;
+        // Uniform in solid angle: cos(theta) uniform in [cos(half aperture), 1]. Directions
+        // below the plane are open, as for the cone passes, which never see their own surface.
+        double visible = 0.0;
         const int m = samplesPerAxis;
         for (int i = 0; i < m; ++i)
             for (int j = 0; j < m; ++j) {
@@ -99,11 +100,9 @@ double analyticConeModelAo(const AnalyticOccluders& occ, const glm::vec3& p, con
                 const double sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT)), phi = 2.0 * M_PI * (j + 0.5) / m;
                 const glm::vec3 d = coneFrame * glm::vec3(float(sinT * std::cos(phi)), float(sinT * std::sin(phi)),
                                                           float(cosT));
-                if (glm::dot(d, n) <= 0.f) continue;
-                above += 1.0;
-                if (!occ.occludes(p, d, radius)) visible += 1.0;
+                if (glm::dot(d, n) <= 0.f || !occ.occludes(p, d, radius)) visible += 1.0;
             }
-        if (above > 0.0) ao += cone.w * visible / above;
+        ao += cone.w * visible / (double(m) * m);
     }
     return ao;
 }

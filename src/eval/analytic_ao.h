@@ -6,7 +6,8 @@
 // - the exact AO, A_R = (1/pi) integral_hemisphere V_R(w) (n.w) dw;
 // - the cone model of a cone set: A_cones = sum_c w_c V_c, where V_c is the visible fraction
 //   of cone c's solid angle (directions uniform in the cone, those below the tangent plane
-//   left out; a cone whose axis is below it counts as closed). It is what cone tracing
+//   open; a cone whose axis is below it counts as closed), as reference/cone_model.h samples
+//   it. It is what cone tracing
 //   approximates with exact visibility: voxel cone tracing converges to it, not to A_R, and
 //   A_cones - A_R is the cone set's own error.
 #pragma once

@@ -229,6 +229,28 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
     doc["reference"] = refJson;
     if (write) writeImage(path("error_legend.png"), falseColorLegend(256, 16, 1.0));
 
+    // The cone model of a cone-tracing variant's cone set, by the reference's rays: what the
+    // variant converges to as its voxels refine. One per distinct cone set.
+    std::map<std::string, Image> coneModels;
+    auto coneModelFor = [&](const MethodVariant& v) -> const Image& {
+        RenderRequest c = ref;
+        c.aovs = {"ao"};
+        c.params.set("reference.cone-model", "1");
+        std::string key;
+        for (const char* k : {"vct.cones", "vct.aperture"}) {
+            std::string value;
+            if (auto it = v.params.find(k); it != v.params.end()) value = it->second;
+            else if (s.base.params.has(k)) value = s.base.params.values().at(k);
+            if (value.empty()) continue;
+            c.params.set(k, value);
+            key += std::string(k) + "=" + value + ";";
+        }
+        auto found = coneModels.find(key);
+        if (found != coneModels.end()) return found->second;
+        say("cone model of " + v.label() + ": " + std::to_string(s.referenceSpp) + " spp");
+        return coneModels.emplace(key, session.render(c).aovs.at("ao")).first->second;
+    };
+
     doc["records"] = nlohmann::json::array();
     for (const MethodVariant& v : s.variants) {
         say(v.kind + " " + v.label());
@@ -275,6 +297,18 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
             rec["roi_rmse"] = nullptr;
             rec["nonroi_rmse"] = nullptr;
         }
+        // Total error = cone error (the cone set's) + voxel error (the voxels' alone).
+        const Method* method = findMethod(isAo ? MethodKind::AO : MethodKind::GI, v.method);
+        if (isAo && method && method->tracesCones) {
+            const Image& model = coneModelFor(v);
+            rec["cone_error_rmse"] = computeErrorMetrics(model, truth, &valid, -1, peak).rmse;
+            rec["voxel_error_rmse"] = computeErrorMetrics(est, model, &valid, -1, peak).rmse;
+            rec["voxel_error_bias"] = computeErrorMetrics(est, model, &valid, -1, peak).bias;
+        } else {
+            rec["cone_error_rmse"] = nullptr;
+            rec["voxel_error_rmse"] = nullptr;
+            rec["voxel_error_bias"] = nullptr;
+        }
         rec["extra"] = first.extra;
         if (write && s.writeImages) {
             const std::string stem = v.fileStem();
@@ -297,7 +331,8 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
 
 std::string resultsCsv(const nlohmann::json& results) {
     std::ostringstream out;
-    out << "scene,label,kind,method,params,time_ms,rmse,mae,bias,max_abs,psnr,ssim,roi_rmse,nonroi_rmse\n";
+    out << "scene,label,kind,method,params,time_ms,rmse,mae,bias,max_abs,psnr,ssim,roi_rmse,nonroi_rmse,"
+           "cone_error_rmse,voxel_error_rmse\n";
     auto num = [](const nlohmann::json& j) { return j.is_null() ? std::string() : j.dump(); };
     for (const auto& r : results["records"]) {
         std::string params;
@@ -307,7 +342,8 @@ std::string resultsCsv(const nlohmann::json& results) {
             << r["kind"].get<std::string>() << ',' << r["method"].get<std::string>() << ",\"" << params << "\","
             << num(r["time_ms"]) << ',' << num(r["rmse"]) << ',' << num(r["mae"]) << ',' << num(r["bias"]) << ','
             << num(r["max_abs"]) << ',' << num(r["psnr"]) << ',' << num(r["ssim"]) << ',' << num(r["roi_rmse"]) << ','
-            << num(r["nonroi_rmse"]) << '\n';
+            << num(r["nonroi_rmse"]) << ',' << num(r.value("cone_error_rmse", nlohmann::json())) << ','
+            << num(r.value("voxel_error_rmse", nlohmann::json())) << '\n';
     }
     return out.str();
 }

@@ -52,6 +52,9 @@ const SettingsTable<ReferenceSettings>& referenceSettings() {
             .integer("reference.roulette-bounce", &ReferenceSettings::rouletteBounce, 1, 1 << 20,
                      "GI: Russian roulette from this bounce on")
             .choice("reference.ray-mode", &ReferenceSettings::rayMode, modes, "how occlusion rays are handed to Embree")
+            .flag("reference.cone-model", &ReferenceSettings::coneModel,
+                  "AO of VCT's cone model (the cone set of vct.cones and vct.aperture, exact visibility in each "
+                  "cone) instead of the hemisphere: what VCT converges to as its voxels refine")
             .choice("reference.pixel", &ReferenceSettings::pixelArea, {{"center", false}, {"area", true}},
                     "reference: AO at the G-buffer's pixel centres, or averaged over the pixel with jittered "
                     "primary rays (box filter, as Cycles)");
@@ -119,7 +122,7 @@ Image ReferenceAO::aoImage() const { return toImage(ao, width, height); }
 Image ReferenceAO::stderrImage() const { return toImage(standardError, width, height); }
 
 ReferenceAO referenceAO(const EmbreeScene& scene, const std::vector<SurfacePoint>& points,
-                        const ReferenceSettings& settings) {
+                        const ReferenceSettings& settings, const ConeModelSampler& cones) {
     settings.validate();
     const size_t n = points.size();
     std::vector<PointSetup> setup(n);
@@ -165,10 +168,22 @@ ReferenceAO referenceAO(const EmbreeScene& scene, const std::vector<SurfacePoint
                 const PointSetup& ps = setup[i];
                 const ReplicatedPair directions(streamSeed(settings.seed, i), K, 0);
                 for (int k = done; k < total; ++k) {
-                    glm::vec2 u = directions.sample(uint32_t(k));
-                    glm::vec3 w = ps.frame.toWorld(sampleCosineHemisphere(u));
-                    if (glm::dot(w, ps.geomNormal) <= 0.f) continue;  // below the surface: occluded
-                    batch.add(ps.origin, w, radius, uint32_t(i * size_t(K) + size_t(k % K)), visit);
+                    const glm::vec2 u = directions.sample(uint32_t(k));
+                    const uint32_t owner = uint32_t(i * size_t(K) + size_t(k % K));
+                    glm::vec3 w;
+                    if (cones.empty()) {
+                        w = ps.frame.toWorld(sampleCosineHemisphere(u));
+                        if (glm::dot(w, ps.geomNormal) <= 0.f) continue;  // below the surface: occluded
+                    } else {
+                        const ConeModelSample cs = cones.sample(u, ps.frame.z, ps.geomNormal);
+                        if (cs.closed) continue;
+                        if (cs.belowPlane) {
+                            visit(owner, true);
+                            continue;
+                        }
+                        w = cs.direction;
+                    }
+                    batch.add(ps.origin, w, radius, owner, visit);
                 }
             }
             batch.flush(visit);
@@ -187,9 +202,9 @@ ReferenceAO referenceAO(const EmbreeScene& scene, const std::vector<SurfacePoint
 }
 
 ReferenceAO referenceAO(const Scene& scene, const std::vector<SurfacePoint>& points,
-                        const ReferenceSettings& settings) {
+                        const ReferenceSettings& settings, const ConeModelSampler& cones) {
     EmbreeScene embree(scene);
-    return referenceAO(embree, points, settings);
+    return referenceAO(embree, points, settings, cones);
 }
 
 ReferenceAO referenceAOPixelArea(const EmbreeScene& scene, const View& view, const ReferenceSettings& settings) {

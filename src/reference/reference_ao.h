@@ -23,6 +23,7 @@
 #include "reference/embree_scene.h"
 #include "core/settings.h"
 #include "core/view.h"
+#include "reference/cone_model.h"
 #include "scene/scene.h"
 
 #include <glm/glm.hpp>
@@ -56,6 +57,9 @@ struct ReferenceSettings {
     // Render modes: false = evaluate at the G-buffer's pixel centres, true = average over the
     // pixel with jittered primary rays (box filter, as Cycles).
     bool pixelArea = false;
+    // AO of the cone model instead of the hemisphere (reference/cone_model.h): the cone set of
+    // the request's vct.cones and vct.aperture, what voxel cone tracing converges to.
+    bool coneModel = false;
 
     void validate() const;  // throws InternalError naming the bad field
 };
@@ -81,11 +85,12 @@ struct ReferenceAO {
     Image stderrImage() const;
 };
 
-// AO at given points (e.g. the G-buffer's pixel centres).
+// AO at given points (e.g. the G-buffer's pixel centres); with `cones`, the cone model of
+// that cone set (directions from it instead of the cosine hemisphere).
 ReferenceAO referenceAO(const EmbreeScene& scene, const std::vector<SurfacePoint>& points,
-                        const ReferenceSettings& settings);
+                        const ReferenceSettings& settings, const ConeModelSampler& cones = {});
 ReferenceAO referenceAO(const Scene& scene, const std::vector<SurfacePoint>& points,
-                        const ReferenceSettings& settings);
+                        const ReferenceSettings& settings, const ConeModelSampler& cones = {});
 
 // Pixel-area AO: jittered primary rays over each pixel, box filter (what Cycles' AO pass
 // computes); samples that miss every surface count A = 1 (sky).

@@ -1,5 +1,7 @@
 #include "reference/reference_methods.h"
 
+#include "cone/cone_set.h"
+#include "cone/cone_settings.h"
 #include "reference/embree_scene.h"
 #include "reference/reference_ao.h"
 #include "reference/reference_gi.h"
@@ -41,10 +43,16 @@ std::vector<SurfacePoint> surfacePoints(const GBuffer& g) {
 void executeAo(MethodContext& ctx) {
     if (!ctx.plan.runs(kPassReferenceAo)) return;
     const ReferenceSettings settings = settingsOf(ctx.request);
+    ConeModelSampler cones;
+    if (settings.coneModel) {
+        if (settings.pixelArea) throw UsageError("--param reference.cone-model=1 needs reference.pixel=center");
+        const ConeSettings c = readConeSettings(ctx.request.params);
+        cones = ConeModelSampler(diffuseConeSet(c.coneCount), c.apertureDeg);
+    }
     const EmbreeScene& embree = embreeOf(ctx);
     auto scope = ctx.timer.scope("reference_ao", false);
     ReferenceAO ao = settings.pixelArea ? referenceAOPixelArea(embree, ctx.view, settings) : [&] {
-        ReferenceAO a = referenceAO(embree, surfacePoints(*ctx.gbuffer), settings);
+        ReferenceAO a = referenceAO(embree, surfacePoints(*ctx.gbuffer), settings, cones);
         a.width = ctx.gbuffer->width;
         a.height = ctx.gbuffer->height;
         return a;
@@ -53,7 +61,8 @@ void executeAo(MethodContext& ctx) {
     ctx.outputs.setImage(kAoStderr, ao.stderrImage());
     ctx.extra["reference_ao"] = {{"spp", ao.sppUsed}, {"mean_stderr", ao.meanStderr}, {"rays", ao.raysTraced},
                                  {"primary_rays", ao.primaryRays}, {"rays_per_second", ao.raysPerSecond},
-                                 {"pixel", settings.pixelArea ? "area" : "center"}};
+                                 {"pixel", settings.pixelArea ? "area" : "center"},
+                                 {"model", settings.coneModel ? "cones" : "hemisphere"}};
 }
 
 void executeGi(MethodContext& ctx) {

@@ -131,6 +131,7 @@ Method makeVctMethod(MethodKind kind) {
     Method m;
     m.name = kVctMethodName;
     m.kind = kind;
+    m.tracesCones = true;
     const bool ao = kind == MethodKind::AO;
     m.summary = ao ? "voxel cone traced AO: cones over the voxels' (directional) opacity, each limited to R"
                    : "voxel cone traced diffuse GI: cones gather the voxels' injected and bounced radiance";

@@ -35,7 +35,9 @@ TEST(GlResourceBounds, BounceListsFitOneStorageBindingAtEveryAcceptedResolution)
             EXPECT_EQ(slabs.back().z1, r.z);
             size_t room = 0;
             for (size_t i = 0; i < slabs.size(); ++i) {
-                if (i > 0) EXPECT_EQ(slabs[i].z0, slabs[i - 1].z1);
+                if (i > 0) {
+                    EXPECT_EQ(slabs[i].z0, slabs[i - 1].z1);
+                }
                 EXPECT_LE((1 + slabs[i].capacity) * sizeof(uint32_t), bindingBytes) << "res " << res;
                 // Room for every voxel of the slab, or for every occupied voxel of the grid.
                 const size_t slabVoxels = size_t(r.x) * r.y * (slabs[i].z1 - slabs[i].z0);

@@ -1,0 +1,64 @@
+// Directions for the cone model: the integral that voxel cone tracing approximates with exact
+// visibility. A cone set (cone/cone_set.h: axes in the tangent frame, weights summing to 1)
+// and an aperture define A_cones = sum_c w_c V_c, V_c the visible fraction of cone c's solid
+// angle within R. Its Monte Carlo estimate picks cone c with probability w_c and a direction
+// uniform in its cap: the fraction of such rays left open is A_cones. As the cone passes do,
+// a cone whose axis lies below the geometric plane is closed, and the part of a cone below
+// the plane is open (the cones never see the surface they start from).
+#pragma once
+
+#include "common/tangent_frame.h"
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <vector>
+
+namespace vct {
+
+struct ConeModelSample {
+    glm::vec3 direction{0.f};
+    bool closed = false;   // the cone's axis is below the geometric plane
+    bool belowPlane = false;  // the direction is below the geometric plane (counts open)
+};
+
+class ConeModelSampler {
+public:
+    ConeModelSampler() = default;
+    ConeModelSampler(std::vector<glm::vec4> cones, float apertureDeg)
+        : mCones(std::move(cones)), mCosHalf(std::cos(0.5f * apertureDeg * 3.14159265358979f / 180.f)) {
+        float sum = 0.f;
+        for (const glm::vec4& c : mCones) mCdf.push_back(sum += c.w);
+        for (float& v : mCdf) v /= sum;
+    }
+    bool empty() const { return mCones.empty(); }
+
+    // u in [0, 1)^2; n the shading normal (the cone set's frame, as the cone passes take it),
+    // ng the geometric normal.
+    ConeModelSample sample(glm::vec2 u, const glm::vec3& n, const glm::vec3& ng) const {
+        size_t c = 0;
+        while (c + 1 < mCdf.size() && u.x >= mCdf[c]) ++c;
+        // Reuse the first coordinate within the chosen cone's interval, so the 2D point set
+        // stays stratified.
+        const float lo = c == 0 ? 0.f : mCdf[c - 1];
+        const float ux = (u.x - lo) / std::max(mCdf[c] - lo, 1e-12f);
+        const glm::vec3 axis = glm::normalize(gpu::frame_fromZ(n) * glm::vec3(mCones[c]));
+        ConeModelSample s;
+        if (glm::dot(axis, ng) <= 0.f) {
+            s.closed = true;
+            return s;
+        }
+        const float cosT = 1.f - (1.f - mCosHalf) * ux, sinT = std::sqrt(std::max(0.f, 1.f - cosT * cosT));
+        const float phi = 2.f * 3.14159265358979f * u.y;
+        s.direction = gpu::frame_fromZ(axis) * glm::vec3(sinT * std::cos(phi), sinT * std::sin(phi), cosT);
+        s.belowPlane = glm::dot(s.direction, ng) <= 0.f;
+        return s;
+    }
+
+private:
+    std::vector<glm::vec4> mCones;
+    std::vector<float> mCdf;
+    float mCosHalf = 1.f;
+};
+
+}  // namespace vct
