@@ -14,6 +14,7 @@ packages=(
   libopenvdb-dev libboost-iostreams-dev libtinygltf-dev libstb-dev nlohmann-json3-dev
   libopenimageio-dev openimageio-tools libopencv-core-dev python3-imath libembree-dev libtbb-dev libcli11-dev
   libgtest-dev libbenchmark-dev chromium python3-matplotlib
+  pybind11-dev python3-pytest python3-numpy python3-openimageio
 )
 missing=()
 for p in "${packages[@]}"; do

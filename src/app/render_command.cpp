@@ -5,6 +5,7 @@
 #include "gl/context.h"
 #include "gl/program_limits.h"
 #include "methods/registry.h"
+#include "render/render_spec.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "util/atomic_file.h"
@@ -43,53 +44,28 @@ void parseSize(const std::string& text, int& width, int& height) {
 }
 
 RenderRequest makeRenderRequest(const RenderOptions& o, const Scene& scene) {
-    RenderRequest r;
-    parseSize(o.size, r.width, r.height);
-    auto oneOf = [](const std::string& v, const std::vector<std::string>& set, const std::string& opt) {
-        if (std::find(set.begin(), set.end(), v) == set.end()) {
-            std::string all;
-            for (const auto& s : set) all += (all.empty() ? "" : ", ") + s;
-            throw UsageError(opt + " '" + v + "': expected one of " + all);
-        }
-    };
-    requireMethod(MethodKind::AO, o.ao, "--ao");
-    requireMethod(MethodKind::GI, o.gi, "--gi");
-    oneOf(o.backend, {"gl", "vdb"}, "--backend");
-    r.ao = o.ao;
-    r.gi = o.gi;
-    if (!std::isfinite(o.radius) || o.radius <= 0.f) throw UsageError("--radius must be finite and > 0");
-    if (!std::isfinite(o.sky) || o.sky < 0.f) throw UsageError("--sky must be finite and >= 0");
-    if (o.spp < 1 || o.spp > (1 << 20)) throw UsageError("--spp must be in [1, 1048576]");
-    if (o.voxelRes < kMinVoxelRes || o.voxelRes > kMaxVoxelRes)
-        throw UsageError("--voxel-res must be in [" + std::to_string(kMinVoxelRes) + ", " +
-                         std::to_string(kMaxVoxelRes) + "]");
-    r.radius = o.radius;
-    r.sky = o.sky;
-    r.spp = o.spp;
-    r.seed = o.seed;
-    r.voxelRes = o.voxelRes;
-    r.backend = o.backend;
-    r.prune = !o.noPrune;
-    if (!o.aovs.empty()) r.aovs = splitList(o.aovs);
-    for (const auto& a : r.aovs)
-        if (!findAov(a)) {
-            std::string all;
-            for (const auto& k : knownAovs()) all += (all.empty() ? "" : ", ") + k.name;
-            throw UsageError("--aov '" + a + "': unknown AOV (known: " + all + ")");
-        }
-    for (const auto& p : o.params) r.params.set(p);
-
-    CameraRequest cam;
-    cam.nameOrIndex = o.camera;
-    cam.fovDeg = o.fovDeg;
+    RenderSpec spec;
+    parseSize(o.size, spec.width, spec.height);
+    spec.ao = o.ao;
+    spec.gi = o.gi;
+    spec.radius = o.radius;
+    spec.sky = o.sky;
+    spec.spp = o.spp;
+    spec.seed = o.seed;
+    spec.voxelRes = o.voxelRes;
+    spec.backend = o.backend;
+    spec.prune = !o.noPrune;
+    spec.aovs = splitList(o.aovs);
+    spec.params = o.params;
+    spec.camera.nameOrIndex = o.camera;
+    spec.camera.fovDeg = o.fovDeg;
     if (!o.eye.empty() || !o.target.empty()) {
         if (o.eye.empty() || o.target.empty()) throw UsageError("--eye and --target go together");
-        cam.hasEye = true;
-        cam.eye = parseVec3(o.eye);
-        cam.target = parseVec3(o.target);
+        spec.camera.hasEye = true;
+        spec.camera.eye = parseVec3(o.eye);
+        spec.camera.target = parseVec3(o.target);
     }
-    r.camera = resolveCamera(scene, cam, float(r.width) / float(r.height));
-    return r;
+    return makeRenderRequest(spec, scene);
 }
 
 namespace {
@@ -174,12 +150,7 @@ int runRender(const RenderOptions& o) {
               << " seed=" << request.seed << " eye=(" << c.eye.x << "," << c.eye.y << "," << c.eye.z << ") target=("
               << c.target.x << "," << c.target.y << "," << c.target.z << ") fov=" << glm::degrees(c.yfov) << "\n";
     RenderResult result = session.render(request);
-    auto unused = request.params.unusedKeys();
-    if (!unused.empty())
-        throw UsageError("--param " + unused.front() + ": unknown parameter for this render (see --help-params)");
-    for (const auto& [name, img] : result.aovs)
-        for (float v : img.pixels)
-            if (!std::isfinite(v)) throw InternalError("runRender", "AOV '" + name + "' has a non-finite value");
+    checkRenderResult(result);
 
     std::filesystem::path out(o.output);
     if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());

@@ -36,8 +36,9 @@ struct RenderOptions {
     std::string glDevice = "auto";
 };
 
-// Turns parsed options into a request for the renderer; throws UsageError
-// naming the option for malformed values (exit code 2).
+// Parses the option strings into a RenderSpec and checks it with the renderer's
+// makeRenderRequest (render/render_spec.h, which the Python module calls too); throws
+// UsageError naming the option for malformed values (exit code 2).
 RenderRequest makeRenderRequest(const RenderOptions& o, const Scene& scene);
 void parseSize(const std::string& text, int& width, int& height);
 std::vector<std::string> splitList(const std::string& text);

@@ -113,9 +113,7 @@ int runCompare(const CompareOptions& o) {
     s.variants = parseMethodList(o.aoMethods, "ao");
     auto gi = parseMethodList(o.giMethods, "gi");
     s.variants.insert(s.variants.end(), gi.begin(), gi.end());
-    if (s.variants.empty()) throw UsageError("--methods and --gi name no method to compare");
-    if (o.refSpp < 1) throw UsageError("--ref-spp must be >= 1");
-    if (o.runs < 1 || o.runs > 100) throw UsageError("--runs must be in [1, 100]");
+    checkComparisonSettings(s);
     s.progress = progressLine;
     GlContext::shared(parseGlDevice(o.render.glDevice));
     nlohmann::json doc = runComparison(scene, s);

@@ -135,6 +135,12 @@ Image displayable(const Image& img, bool radiance) {
 
 }  // namespace
 
+void checkComparisonSettings(const ComparisonSettings& s) {
+    if (s.variants.empty()) throw UsageError("--methods and --gi name no method to compare");
+    if (s.referenceSpp < 1) throw UsageError("--ref-spp must be >= 1");
+    if (s.timingRuns < 1 || s.timingRuns > 100) throw UsageError("--runs must be in [1, 100]");
+}
+
 nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
     auto say = [&](const std::string& line) {
         if (s.progress) s.progress(line);

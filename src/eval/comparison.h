@@ -40,6 +40,11 @@ struct ComparisonSettings {
     std::function<void(const std::string&)> progress;  // called with a line per step (may be empty)
 };
 
+// What a comparison needs before it starts: a variant to score, --ref-spp >= 1, --runs in
+// [1, 100]. Throws std::invalid_argument naming the option (`vct compare` and the Python
+// module both call it, so both report the same message).
+void checkComparisonSettings(const ComparisonSettings& settings);
+
 // Runs the comparison and returns the results document (the content of results.json):
 // top-level scene/camera/resolution/radius/renderer/cores/reference, plus "records".
 // Writes images, results.json and results.csv into outputDir when set.

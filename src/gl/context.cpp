@@ -131,6 +131,18 @@ void GlContext::checkErrors(const std::string& pass) {
 
 std::vector<std::string> GlContext::pendingErrors() const { return mImpl->errors; }
 
+void GlContext::makeCurrent() {
+    if (eglGetCurrentContext() == mImpl->context) return;
+    if (!eglMakeCurrent(mImpl->display, EGL_NO_SURFACE, EGL_NO_SURFACE, mImpl->context))
+        throw std::runtime_error("EGL: eglMakeCurrent failed (is the context current on another thread?)");
+}
+
+void GlContext::releaseCurrent() {
+    if (eglGetCurrentContext() != mImpl->context) return;
+    if (!eglMakeCurrent(mImpl->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT))
+        throw std::runtime_error("EGL: eglMakeCurrent could not release the context");
+}
+
 GlContext& GlContext::shared(GlDevice device) {
     static std::unique_ptr<GlContext> instance;
     static std::mutex m;

@@ -36,6 +36,12 @@ public:
     // Errors reported since the last check, without clearing them.
     std::vector<std::string> pendingErrors() const;
 
+    // An EGL context is current on at most one thread at a time: a caller that renders from
+    // several threads (the Python module) makes it current on its thread and releases it
+    // after, under one process-wide lock. Both throw std::runtime_error when EGL refuses.
+    void makeCurrent();
+    void releaseCurrent();
+
     // The process-wide context, created on first use (tests and the CLI share one). An Auto
     // request takes $VCT_GL_DEVICE (auto, surfaceless or device) where it is set.
     static GlContext& shared(GlDevice device = GlDevice::Auto);

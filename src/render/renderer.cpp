@@ -11,6 +11,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -49,6 +50,8 @@ struct RenderSession::Impl {
     GpuScene gpu;
     std::map<std::string, std::shared_ptr<GBuffer>> gbuffers;  // keyed by camera + size
     std::unique_ptr<ShadowMaps> shadows;
+    int shadowSize = 0;  // the shadow.size the cached maps were rendered with
+    std::set<std::string> paramsRead;  // "ao|gi|key=value" of every key a render read
     StateStore methods;  // the methods' state across renders (voxel grids, the BVH)
 };
 
@@ -132,8 +135,11 @@ RenderResult RenderSession::render(const RenderRequest& request) {
     }
     GlTexture direct;
     if (plan.runs(kPassShadow)) {
-        if (!mImpl->shadows) {
-            const int size = rendererSettings().read(request.params).shadowSize;
+        // Read on every render, not only the first: a session serves many requests (the
+        // Python module's), and a key read once would be "unknown" to the next one.
+        const int size = rendererSettings().read(request.params).shadowSize;
+        if (!mImpl->shadows || mImpl->shadowSize != size) {
+            mImpl->shadowSize = size;
             mImpl->shadows = std::make_unique<ShadowMaps>(renderShadowMaps(mImpl->gpu, mScene, size, timer));
             gl.checkErrors("shadow");
             mRunCounts["shadow"]++;
@@ -192,6 +198,15 @@ RenderResult RenderSession::render(const RenderRequest& request) {
         result.aovs[aov] = std::move(img);
     }
     gl.checkErrors("readback");
+    // A key this render did not read, but an earlier render of the same methods read with
+    // the same value, went into state this one reused (a cached voxel grid): it is no typo.
+    const std::string methods = request.ao + "|" + request.gi + "|";
+    const std::vector<std::string> unread = request.params.unusedKeys();
+    for (const auto& [key, value] : request.params.values()) {
+        const std::string read = methods + key + "=" + value;
+        if (std::find(unread.begin(), unread.end(), key) == unread.end()) mImpl->paramsRead.insert(read);
+        else if (!mImpl->paramsRead.count(read)) result.unusedParams.push_back(key);
+    }
     result.totalMs = nowMs() - start;
     result.passes = timer.timings();
     return result;

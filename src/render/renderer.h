@@ -26,6 +26,9 @@ struct RenderResult {
     std::vector<PassTiming> passes;     // passes that ran in this render (cached ones not repeated)
     double totalMs = 0.0;               // wall clock of this render
     nlohmann::json extra = nlohmann::json::object();  // method statistics (rays, voxel memory, ...)
+    // --param keys nobody read: not in this render, nor with the same value and methods in an
+    // earlier render of the session whose cached state (a voxel grid) this one reused.
+    std::vector<std::string> unusedParams;
 };
 
 class RenderSession {
