@@ -5,6 +5,7 @@
 #include "ao/hbao/hbao.h"
 #include "ao/horizon/horizon_ao.h"
 #include "ao/ssao/ssao.h"
+#include "ao/vbao/vbao.h"
 #include "reference/reference_methods.h"
 #include "vct/vct_method.h"
 
@@ -18,6 +19,7 @@ const std::vector<const Method*>& registeredMethods() {
         &alchemyMethod(),
         &hbaoMethod(),
         &gtaoMethod(),
+        &vbaoMethod(),
         &vctAoMethod(),
         &referenceAoMethod(),
         &vctGiMethod(),
