@@ -6,6 +6,7 @@
 #include "ao/horizon/horizon_ao.h"
 #include "ao/ssao/ssao.h"
 #include "ao/vbao/vbao.h"
+#include "denoised/denoised_methods.h"
 #include "reference/reference_methods.h"
 #include "vct/vct_method.h"
 
@@ -21,8 +22,10 @@ const std::vector<const Method*>& registeredMethods() {
         &gtaoMethod(),
         &vbaoMethod(),
         &vctAoMethod(),
+        &rtaoDenoisedMethod(),
         &referenceAoMethod(),
         &vctGiMethod(),
+        &ptDenoisedMethod(),
         &referenceGiMethod(),
     };
     return methods;
