@@ -8,6 +8,7 @@
 #include "ao/vbao/vbao.h"
 #include "denoised/denoised_methods.h"
 #include "reference/reference_methods.h"
+#include "ssil/ssil.h"
 #include "vct/vct_method.h"
 
 namespace vct {
@@ -25,6 +26,7 @@ const std::vector<const Method*>& registeredMethods() {
         &rtaoDenoisedMethod(),
         &referenceAoMethod(),
         &vctGiMethod(),
+        &ssilMethod(),
         &ptDenoisedMethod(),
         &referenceGiMethod(),
     };
