@@ -114,6 +114,15 @@ struct MethodContext {
     FrameOutputs& outputs;
     std::map<std::string, int>& runCounts;  // how often shared passes (voxelize, ...) ran
     nlohmann::json& extra;                  // statistics for --stats and compare records
+    // The renderer's own resources of this render, by id, for a method whose pass declared it
+    // reads them (kDirect: the punctual lights' direct light, RGBA32F, the G-buffer's size).
+    std::map<std::string, const GlTexture*, std::less<>> rendererTextures = {};
+
+    // The renderer's texture `id`, or null where the plan ran no pass that writes it.
+    const GlTexture* rendererTexture(ResourceId id) const {
+        auto it = rendererTextures.find(id.name);
+        return it == rendererTextures.end() ? nullptr : it->second;
+    }
 };
 
 struct Method {

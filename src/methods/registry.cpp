@@ -5,7 +5,10 @@
 #include "ao/hbao/hbao.h"
 #include "ao/horizon/horizon_ao.h"
 #include "ao/ssao/ssao.h"
+#include "ao/vbao/vbao.h"
+#include "denoised/denoised_methods.h"
 #include "reference/reference_methods.h"
+#include "ssil/ssil.h"
 #include "vct/vct_method.h"
 
 namespace vct {
@@ -18,9 +21,13 @@ const std::vector<const Method*>& registeredMethods() {
         &alchemyMethod(),
         &hbaoMethod(),
         &gtaoMethod(),
+        &vbaoMethod(),
         &vctAoMethod(),
+        &rtaoDenoisedMethod(),
         &referenceAoMethod(),
         &vctGiMethod(),
+        &ssilMethod(),
+        &ptDenoisedMethod(),
         &referenceGiMethod(),
     };
     return methods;

@@ -14,16 +14,10 @@ namespace {
 
 constexpr const char* kName = "reference";
 
-// The BVH is built on first use by either method and kept for the session.
+// The BVH is built on first use by any ray-tracing method and kept for the session.
 struct ReferenceSession {
     std::unique_ptr<EmbreeScene> embree;
 };
-
-const EmbreeScene& embreeOf(MethodContext& ctx) {
-    ReferenceSession& s = ctx.session.get<ReferenceSession>("reference");
-    if (!s.embree) s.embree = std::make_unique<EmbreeScene>(ctx.scene);
-    return *s.embree;
-}
 
 ReferenceSettings settingsOf(const RenderRequest& r) {
     ReferenceSettings base;
@@ -49,7 +43,7 @@ void executeAo(MethodContext& ctx) {
         const ConeSettings c = readConeSettings(ctx.request.params);
         cones = ConeModelSampler(diffuseConeSet(c.coneCount), c.apertureDeg);
     }
-    const EmbreeScene& embree = embreeOf(ctx);
+    const EmbreeScene& embree = sessionEmbreeScene(ctx);
     auto scope = ctx.timer.scope("reference_ao", false);
     ReferenceAO ao = settings.pixelArea ? referenceAOPixelArea(embree, ctx.view, settings) : [&] {
         ReferenceAO a = referenceAO(embree, surfacePoints(*ctx.gbuffer), settings, cones);
@@ -68,7 +62,7 @@ void executeAo(MethodContext& ctx) {
 void executeGi(MethodContext& ctx) {
     if (!ctx.plan.runs(kPassReferenceGi)) return;
     const ReferenceSettings settings = settingsOf(ctx.request);
-    const EmbreeScene& embree = embreeOf(ctx);
+    const EmbreeScene& embree = sessionEmbreeScene(ctx);
     auto scope = ctx.timer.scope("reference_gi", false);
     ReferenceGI gi = referenceGI(embree, ctx.view, settings, settings.pixelArea);
     ctx.outputs.setImage(kGiIndirect, gi.indirect);
@@ -86,6 +80,12 @@ void executeGi(MethodContext& ctx) {
 }
 
 }  // namespace
+
+const EmbreeScene& sessionEmbreeScene(MethodContext& ctx) {
+    ReferenceSession& s = ctx.session.get<ReferenceSession>("reference");
+    if (!s.embree) s.embree = std::make_unique<EmbreeScene>(ctx.scene);
+    return *s.embree;
+}
 
 const Method& referenceAoMethod() {
     static const Method m = [] {

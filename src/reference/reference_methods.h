@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/method.h"
+#include "reference/embree_scene.h"
 
 namespace vct {
 
@@ -12,6 +13,10 @@ inline constexpr PassId kPassReferenceAo{"reference_ao"};
 inline constexpr PassId kPassReferenceGi{"reference_gi"};
 inline constexpr ResourceId kAoStderr{"ao_stderr"};
 inline constexpr ResourceId kIndirectStderr{"indirect_stderr"};
+
+// The Embree BVH of the render's scene, built on first use and kept for the session: shared
+// by every method that traces rays (the reference and the low-spp ray tracers).
+const EmbreeScene& sessionEmbreeScene(MethodContext& ctx);
 
 const Method& referenceAoMethod();
 const Method& referenceGiMethod();

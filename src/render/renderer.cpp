@@ -156,6 +156,7 @@ RenderResult RenderSession::render(const RenderRequest& request) {
     for (const Method* m : active.list()) {
         MethodContext ctx{plan,     request, mScene,  mFeatures, mImpl->gpu, gbuffer.get(), view,
                           timer,    mImpl->methods, frame, outputs, mRunCounts, result.extra};
+        if (direct) ctx.rendererTextures.emplace(std::string(kDirect.name), &direct);
         m->execute(ctx);
     }
 

@@ -187,3 +187,28 @@ TEST(RenderCli, SponzaRendersTextured) {
     for (size_t i = 0; i < a.pixels.size(); i += 3) distinct.insert(int(a.pixels[i] * 1000.f));
     EXPECT_GT(distinct.size(), 60u);
 }
+
+// The baselines reach every list through the registry alone: --ao / --gi, --help-params (each
+// key with its default and range) and compare's default methods (every AO method but the
+// reference).
+TEST(RenderCli, BaselinesAreListedEverywhere) {
+    auto help = runVct("render --help");
+    ASSERT_EQ(help.exitCode, 0) << help.output;
+    for (const char* name : {"vbao", "rtao-denoised", "ssil", "pt-denoised"})
+        EXPECT_NE(help.output.find(name), std::string::npos) << name << "\n" << help.output;
+    auto params = runVct("render --help-params");
+    ASSERT_EQ(params.exitCode, 0) << params.output;
+    for (const char* key : {"vbao.slices", "vbao.steps", "vbao.thickness", "vbao.radius-multiplier",
+                            "vbao.sample-power", "ssil.slices", "ssil.steps", "ssil.thickness", "ssil.extent",
+                            "ssil.filter", "atrous.iterations", "atrous.sigma-depth", "atrous.sigma-normal",
+                            "atrous.sigma-albedo", "rtao-denoised.spp", "pt-denoised.spp", "pt-denoised.bounces"})
+        EXPECT_NE(params.output.find(key), std::string::npos) << key;
+    auto compare = runVct("compare --help");
+    ASSERT_EQ(compare.exitCode, 0) << compare.output;
+    const size_t list = compare.output.find("ssao-crytek,");
+    ASSERT_NE(list, std::string::npos) << compare.output;
+    const std::string defaults = compare.output.substr(list, compare.output.find_first_of(" \n]", list) - list);
+    for (const char* name : {"gtao", "vbao", "vct", "rtao-denoised"})
+        EXPECT_NE(("," + defaults + ",").find(std::string(",") + name + ","), std::string::npos) << name << ": " << defaults;
+    EXPECT_EQ(("," + defaults + ",").find(",reference,"), std::string::npos) << defaults;
+}

@@ -9,6 +9,7 @@
 #include "ao/horizon/horizon_ao.h"
 #include "ao/screen_space.h"
 #include "ao/ssao/ssao.h"
+#include "ao/vbao/vbao.h"
 #include "gl/context.h"
 #include "gl/readback.h"
 #include "methods/registry.h"
@@ -166,11 +167,12 @@ void maybeDump(const Image& ao, const std::string& name) {
     std::fclose(file);
 }
 
-// The six screen-space estimators, by name.
+// The screen-space estimators, by name.
 const std::vector<const ScreenSpaceAo*>& estimators() {
     static const std::vector<const ScreenSpaceAo*> all = {&ssaoCrytekEstimator(), &ssaoHemisphereEstimator(),
                                                           &horizonEstimator(),    &alchemyEstimator(),
-                                                          &hbaoEstimator(),       &gtaoEstimator()};
+                                                          &hbaoEstimator(),       &gtaoEstimator(),
+                                                          &vbaoEstimator()};
     return all;
 }
 
@@ -225,10 +227,10 @@ Stats interiorStats(const Image& ao, int margin) {
     return s;
 }
 
-const std::vector<std::string> kOpenMethods = {"ssao-hemisphere", "ssao-horizon", "alchemy", "hbao", "gtao"};
+const std::vector<std::string> kOpenMethods = {"ssao-hemisphere", "ssao-horizon", "alchemy", "hbao", "gtao", "vbao"};
 
 TEST(ScreenSpaceAo, EveryEstimatorIsARegisteredScreenSpaceMethod) {
-    // The registry's screen-space methods (those running the ssao pass) are these six.
+    // The registry's screen-space methods (those running the ssao pass) are these.
     std::vector<std::string> registered;
     for (const Method* m : registeredMethods())
         for (const MethodPass& p : m->passes)
@@ -306,7 +308,7 @@ TEST(ScreenSpaceAo, SameSeedSameTexture) {
         EXPECT_EQ(a.pixels, b.pixels) << method;
     }
     // The seed really drives the noise: another seed changes the unblurred estimate.
-    for (const char* method : {"ssao-hemisphere", "alchemy", "hbao", "gtao"}) {
+    for (const char* method : {"ssao-hemisphere", "alchemy", "hbao", "gtao", "vbao"}) {
         Image a = runAo(f, method, paramsOf({"blur=0"}), 0.5f, 1);
         Image b = runAo(f, method, paramsOf({"blur=0"}), 0.5f, 2);
         EXPECT_NE(a.pixels, b.pixels) << method;
