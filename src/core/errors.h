@@ -20,7 +20,10 @@ struct UsageError : std::invalid_argument {
 struct InternalError : std::logic_error {
     // `where`: the pass or function whose contract broke.
     InternalError(const std::string& where, const std::string& what)
-        : std::logic_error("internal error in " + where + ": " + what) {}
+        : std::logic_error("internal error in " + where + ": " + what), detail(what) {}
+    // The message without "internal error in <where>": for a binding whose caller supplied the
+    // data whose contract broke, and which reports it as the caller's error.
+    std::string detail;
 };
 
 }  // namespace vct

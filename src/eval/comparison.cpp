@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -88,6 +89,17 @@ Image maskAnd(const Image& a, const Image& b, bool negateB) {
         m.pixels[i] = (a.pixels[i] > 0.5f && (negateB ? !inB : inB)) ? 1.f : 0.f;
     }
     return m;
+}
+
+// The mean of an image's channels, one channel.
+Image channelMean(const Image& img) {
+    Image out(img.width, img.height, 1);
+    for (size_t i = 0; i < out.pixels.size(); ++i) {
+        float sum = 0.f;
+        for (int c = 0; c < img.channels; ++c) sum += img.pixels[i * size_t(img.channels) + size_t(c)];
+        out.pixels[i] = sum / float(img.channels);
+    }
+    return out;
 }
 
 double median(std::vector<double> v) {
@@ -180,7 +192,7 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
     RenderResult refResult = session.render(ref);
     const Image valid = validMaskFromDepth(refResult.aovs.at("depth"));
     nlohmann::json refJson = {{"spp", s.referenceSpp}};
-    Image refAo, refAoStderr, roi, nonRoi, refGi, refGiStderr;
+    Image refAo, refAoStderr, roi, nonRoi, refGi, refGiStderr, roiGi, nonRoiGi;
     if (anyAo) {
         refAo = refResult.aovs.at("ao");
         refAoStderr = refResult.aovs.at("ao_stderr");
@@ -195,16 +207,24 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
     }
     const SceneFeatures features = session.features();
     doc["offscreen_occluders"] = features.hasOffscreenOccluders;
+    // The scene without its off-screen parts, for the ROIs: rendered only when they exist.
+    std::optional<Scene> without;
+    std::optional<RenderSession> other;
+    auto sessionWithout = [&]() -> RenderSession& {
+        if (!other) {
+            without = withoutOffscreenOccluders(scene);
+            other.emplace(*without);
+        }
+        return *other;
+    };
     if (anyAo && features.hasOffscreenOccluders) {
         // ROI: where the reference AO changes when the off-screen occluders are removed
         // (by more than 3 sigma of the two estimates' combined noise).
         say("reference AO without the off-screen occluders (ROI)");
-        Scene without = withoutOffscreenOccluders(scene);
-        RenderSession other(without);
         RenderRequest r2 = ref;
         r2.aovs = {"ao", "ao_stderr"};
         r2.seed = ref.seed + 1;
-        RenderResult res2 = other.render(r2);
+        RenderResult res2 = sessionWithout().render(r2);
         roi = maskAnd(valid, deriveRoiMask(refAo, res2.aovs.at("ao"), refAoStderr, res2.aovs.at("ao_stderr"), 3.0), false);
         nonRoi = maskAnd(valid, roi, true);
         doc["roi_pixels"] = countMask(roi);
@@ -231,7 +251,24 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
             writeImage(path("reference_gi_stderr.exr"), refGiStderr, {"indirect_stderr"});
             writeImage(path("reference_gi.png"), displayable(refGi, true));
         }
+        if (features.hasOffscreenOccluders) {
+            // The GI ROI: where the reference's indirect light (the mean of its channels, whose
+            // standard error the reference reports) changes when the off-screen surfaces that
+            // reflect or emit it are removed, by more than 3 sigma.
+            say("reference GI without the off-screen surfaces (ROI)");
+            RenderRequest g2 = g;
+            g2.seed = g.seed + 1;
+            RenderResult gr2 = sessionWithout().render(g2);
+            roiGi = maskAnd(valid,
+                            deriveRoiMask(channelMean(refGi), channelMean(gr2.aovs.at("indirect")), refGiStderr,
+                                          gr2.aovs.at("indirect_stderr"), 3.0),
+                            false);
+            nonRoiGi = maskAnd(valid, roiGi, true);
+            doc["roi_pixels_gi"] = countMask(roiGi);
+            if (write) writeImage(path("roi_gi.png"), roiGi);
+        }
     }
+    if (!doc.contains("roi_pixels_gi")) doc["roi_pixels_gi"] = nullptr;
     doc["reference"] = refJson;
     if (write) writeImage(path("error_legend.png"), falseColorLegend(256, 16, 1.0));
 
@@ -296,9 +333,11 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
         ErrorMetrics all = computeErrorMetrics(est, truth, &valid, -1, peak);
         nlohmann::json m = metricsJson(all);
         for (auto it = m.begin(); it != m.end(); ++it) rec[it.key()] = it.value();
-        if (!roi.empty() && isAo) {
-            rec["roi_rmse"] = computeErrorMetrics(est, truth, &roi, -1, peak).rmse;
-            rec["nonroi_rmse"] = computeErrorMetrics(est, truth, &nonRoi, -1, peak).rmse;
+        const Image& roiOf = isAo ? roi : roiGi;
+        const Image& nonRoiOf = isAo ? nonRoi : nonRoiGi;
+        if (!roiOf.empty()) {
+            rec["roi_rmse"] = computeErrorMetrics(est, truth, &roiOf, -1, peak).rmse;
+            rec["nonroi_rmse"] = computeErrorMetrics(est, truth, &nonRoiOf, -1, peak).rmse;
         } else {
             rec["roi_rmse"] = nullptr;
             rec["nonroi_rmse"] = nullptr;

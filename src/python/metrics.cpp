@@ -3,6 +3,7 @@
 #include "python/bindings.h"
 #include "python/convert.h"
 
+#include "core/errors.h"
 #include "eval/metrics.h"
 #include "eval/roi.h"
 
@@ -14,6 +15,18 @@ namespace vct::python {
 
 namespace {
 
+// src/eval checks its images as a contract between parts of the program (InternalError): a NaN
+// there is a broken estimator. Here the arrays are the caller's, so the same checks are the
+// caller's error and raise ValueError with the check's message.
+template <class F>
+auto onCallersArrays(F&& f) {
+    try {
+        return f();
+    } catch (const InternalError& e) {
+        throw py::value_error(e.detail);
+    }
+}
+
 std::optional<Image> maskOf(const py::object& mask) {
     if (mask.is_none()) return std::nullopt;
     return toImage(mask, "mask");
@@ -23,8 +36,10 @@ ErrorMetrics errorMetrics(const py::object& estimate, const py::object& referenc
                           int channel, double peak) {
     const Image e = toImage(estimate, "estimate"), r = toImage(reference, "reference");
     const std::optional<Image> m = maskOf(mask);
-    py::gil_scoped_release nogil;
-    return computeErrorMetrics(e, r, m ? &*m : nullptr, channel, peak);
+    return onCallersArrays([&] {
+        py::gil_scoped_release nogil;
+        return computeErrorMetrics(e, r, m ? &*m : nullptr, channel, peak);
+    });
 }
 
 }  // namespace
@@ -44,8 +59,10 @@ or mismatched shapes, raise ValueError.)doc");
     m.def("ssim", [](const py::object& e, const py::object& r, const py::object& mask, int channel, double peak) {
         const Image est = toImage(e, "estimate"), ref = toImage(r, "reference");
         const std::optional<Image> mk = maskOf(mask);
-        py::gil_scoped_release nogil;
-        return computeSsim(est, ref, mk ? &*mk : nullptr, channel, peak);
+        return onCallersArrays([&] {
+            py::gil_scoped_release nogil;
+            return computeSsim(est, ref, mk ? &*mk : nullptr, channel, peak);
+        });
     }, py::arg("estimate"), py::arg("reference"), py::arg("mask") = py::none(), py::arg("channel") = -1,
        py::arg("peak") = 1.0,
        R"doc(Mean SSIM (Wang et al. 2004, 11x11 Gaussian window, sigma 1.5) over windows
@@ -73,11 +90,10 @@ max_abs, psnr (dB, capped at 200), ssim and pixels (the valid pixel count).)doc"
                     const py::object& seWithout, double k) {
         const Image a = toImage(aoWith, "ao_with"), b = toImage(aoWithout, "ao_without");
         const Image sa = toImage(seWith, "stderr_with"), sb = toImage(seWithout, "stderr_without");
-        Image roi;
-        {
+        const Image roi = onCallersArrays([&] {
             py::gil_scoped_release nogil;
-            roi = deriveRoiMask(a, b, sa, sb, k);
-        }
+            return deriveRoiMask(a, b, sa, sb, k);
+        });
         return toArray(roi);
     }, py::arg("ao_with"), py::arg("ao_without"), py::arg("stderr_with"), py::arg("stderr_without"),
        py::arg("k") = 3.0,

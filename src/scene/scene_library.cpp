@@ -196,6 +196,67 @@ SceneBuilder offscreenThin() {
     return b;
 }
 
+// Off-screen light, for GI: in each, the light that reaches the visible surfaces after one bounce
+// leaves a surface the camera cannot see. The sources are flagged off-screen, so the GI ROI is
+// where removing them changes the reference's indirect light.
+
+// offscreen_wall_behind's view and wall, the wall orange and sunlit on the face toward the view:
+// the sun travels toward +Z, so the floor ahead is lit too and the wall bounces onto it.
+SceneBuilder offscreenGiWall() {
+    SceneBuilder b("offscreen_gi_wall");
+    const int floor = b.addMaterial("floor", kFloorGrey);
+    const int orange = b.addMaterial("sunlit_wall", glm::vec3(0.85f, 0.45f, 0.15f));
+    const int wall = b.addMaterial("wall", kWallBeige);
+    b.addPlane("floor", glm::vec3(0.f, 0.f, -1.f), glm::vec2(12.f, 12.f), floor);
+    b.addBox("box", glm::vec3(0.4f, 0.f, -1.f), glm::vec3(0.8f, 0.4f, -0.6f), wall);
+    offscreenBox(b, "sunlit_wall", glm::vec3(-3.f, 0.f, 0.55f), glm::vec3(3.f, 2.5f, 0.75f), orange);
+    b.addDirectionalLight("sun", glm::normalize(glm::vec3(0.3f, -0.8f, 0.6f)), glm::vec3(1.f, 0.96f, 0.9f),
+                          3.f);
+    const glm::vec3 eye(0.f, 1.2f, 0.5f);
+    b.addCamera("view", eye, targetPitchedDown(eye, 45.f), glm::radians(50.f), 0.05f, 50.f);
+    return b;
+}
+
+// offscreen_overhang's view under a slab whose underside, 8 cm above the eye and out of view, is
+// an emitter facing down: every visible floor point under it is lit only through GI.
+SceneBuilder offscreenGiEmitter() {
+    SceneBuilder b("offscreen_gi_emitter");
+    const int floor = b.addMaterial("floor", kFloorGrey);
+    const int blue = b.addMaterial("slab", kOccluderBlue);
+    const int wall = b.addMaterial("wall", kWallBeige);
+    const int panel = b.addMaterial("panel", glm::vec3(0.8f), 1.5f * glm::vec3(1.f, 0.9f, 0.75f));
+    b.addPlane("floor", glm::vec3(0.f, 0.f, 0.f), glm::vec2(12.f, 12.f), floor);
+    b.addBox("box", glm::vec3(0.2f, 0.f, 0.2f), glm::vec3(0.6f, 0.2f, 0.6f), wall);
+    offscreenBox(b, "slab", glm::vec3(-3.f, 0.59f, 0.8f), glm::vec3(3.f, 0.69f, 5.f), blue);
+    // cross(+X, +Z) = -Y: the panel faces the floor, 1 cm under the slab.
+    const int emitter =
+        b.addQuad("offscreen_emitter", glm::vec3(-1.5f, 0.58f, 0.9f), glm::vec3(3.f, 0.f, 0.f),
+                  glm::vec3(0.f, 0.f, 3.f), panel);
+    b.markOffscreen(emitter);
+    addSun(b, 1.f);
+    const glm::vec3 eye(0.f, 0.5f, 2.f);
+    b.addCamera("view", eye, targetPitchedDown(eye, 32.f), glm::radians(50.f), 0.05f, 50.f);
+    return b;
+}
+
+// Looking 30 degrees up (half fov 25), every in-view direction rises, so the red, sunlit floor
+// under the eye (0.3 m) is out of view; it bounces red onto the white wall ahead.
+SceneBuilder offscreenGiFloor() {
+    SceneBuilder b("offscreen_gi_floor");
+    const int red = b.addMaterial("red_floor", glm::vec3(0.8f, 0.1f, 0.05f));
+    const int white = b.addMaterial("wall", kWhite);
+    const int floorNode = b.addPlane("offscreen_floor", glm::vec3(0.f, 0.f, 1.f), glm::vec2(10.f, 8.f), red);
+    b.markOffscreen(floorNode);
+    b.addBox("back_wall", glm::vec3(-4.f, 0.f, -1.2f), glm::vec3(4.f, 3.f, -1.f), white);
+    b.addDirectionalLight("sun", glm::normalize(glm::vec3(0.2f, -1.f, -0.4f)), glm::vec3(1.f, 0.96f, 0.9f),
+                          3.f);
+    const glm::vec3 eye(0.f, 0.3f, 1.f);
+    const float up = glm::radians(30.f);
+    b.addCamera("view", eye, eye + 2.f * glm::vec3(0.f, std::sin(up), -std::cos(up)), glm::radians(50.f), 0.05f,
+                50.f);
+    return b;
+}
+
 // Closed forms: AO = 1 everywhere (nothing above the plane); a sun straight down gives E = 1 lux.
 SceneBuilder openPlane() {
     SceneBuilder b("open_plane");
@@ -229,6 +290,9 @@ const std::vector<std::pair<std::string, std::function<SceneBuilder()>>>& regist
         {"offscreen_side", offscreenSide},
         {"offscreen_hidden", offscreenHidden},
         {"offscreen_thin", offscreenThin},
+        {"offscreen_gi_wall", offscreenGiWall},
+        {"offscreen_gi_emitter", offscreenGiEmitter},
+        {"offscreen_gi_floor", offscreenGiFloor},
         {"open_plane", openPlane},
         {"wall_base", wallBase},
     };

@@ -156,7 +156,8 @@ TEST(SceneLibrary, CornellBoxHasEmitterPointLightAndCamera) {
 
 TEST(SceneLibrary, OffscreenOccludersAreOutOfViewButNearVisibleSurfaces) {
     for (const char* name : {"offscreen_overhang", "offscreen_wall_behind", "offscreen_side",
-                             "offscreen_hidden", "offscreen_thin"}) {
+                             "offscreen_hidden", "offscreen_thin", "offscreen_gi_wall", "offscreen_gi_emitter",
+                             "offscreen_gi_floor"}) {
         const vct::Scene s = vct::makeProjectScene(name).toScene();
         const size_t marked = size_t(std::count(s.triangleOffscreen.begin(), s.triangleOffscreen.end(), 1));
         EXPECT_GT(marked, 0u) << name;
