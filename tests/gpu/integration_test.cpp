@@ -168,3 +168,28 @@ TEST(Integration, OffscreenOverhangSeparatesScreenAndWorldSpace) {
     }
     EXPECT_LT(record(doc, "vct")["roi_rmse"].get<double>(), bestScreen);
 }
+
+// The off-screen GI scenes: the light that reaches the view leaves surfaces out of it, so the
+// GI ROI covers much of the image; screen-space indirect light cannot gather it and the cones
+// can.
+TEST(Integration, OffscreenGiSeparatesScreenAndWorldSpace) {
+    for (const char* name : {"offscreen_gi_wall", "offscreen_gi_emitter", "offscreen_gi_floor"}) {
+        SCOPED_TRACE(name);
+        Scene s = projectScene(name);
+        ComparisonSettings cs;
+        cs.base = requestFor(s, 48);
+        cs.base.sky = 0.f;
+        cs.referenceSpp = 32;
+        cs.timingRuns = 1;
+        cs.variants = parseMethodList("vct,ssil", "gi");
+        nlohmann::json doc = runComparison(s, cs);
+        ASSERT_FALSE(doc["roi_pixels_gi"].is_null());
+        const int valid = record(doc, "vct")["pixels"].get<int>();
+        EXPECT_GT(doc["roi_pixels_gi"].get<int>(), valid / 4);
+        const double vct = record(doc, "vct")["roi_rmse"].get<double>();
+        const double ssil = record(doc, "ssil")["roi_rmse"].get<double>();
+        std::cerr << name << " roi pixels " << doc["roi_pixels_gi"] << " of " << valid << ", roi_rmse vct " << vct
+                  << " ssil " << ssil << "\n";
+        EXPECT_LT(vct, ssil);
+    }
+}
