@@ -129,7 +129,8 @@ std::string plotsSection(const SiteCase& c) {
     };
     const Plot plots[] = {{"ao", "rmse", "AO RMSE (valid pixels)"},
                           {"ao", "roi_rmse", "AO RMSE inside the ROI"},
-                          {"gi", "rmse", "indirect radiance RMSE"}};
+                          {"gi", "rmse", "indirect radiance RMSE"},
+                          {"gi", "roi_rmse", "indirect radiance RMSE inside the ROI"}};
     int written = 0;
     for (const Plot& p : plots) {
         std::vector<PlotPoint> points;
@@ -277,6 +278,7 @@ std::string metadataSection(const SiteCase& c, const std::string& generated) {
                                    "gl_renderer",
                                    "cores",
                                    "roi_pixels",
+                                   "roi_pixels_gi",
                                    "offscreen_occluders"};
     if (d.contains("reference") && d["reference"].is_object()) {
         std::string ref;
@@ -291,6 +293,10 @@ std::string metadataSection(const SiteCase& c, const std::string& generated) {
                                               "changes the reference AO by more than 3 standard errors");
     else
         row("ROI (off-screen occluders)", "none: the scene has no off-screen occluders");
+    if (d.contains("roi_pixels_gi") && !d["roi_pixels_gi"].is_null())
+        row("GI ROI (off-screen surfaces)", d["roi_pixels_gi"].dump() +
+                                                " pixels where removing the off-screen surfaces changes the "
+                                                "reference's indirect light by more than 3 standard errors");
     row("GL renderer", d.value("gl_renderer", std::string("?")));
     row("CPU cores", d.contains("cores") ? d["cores"].dump() : "?");
     for (auto it = d.begin(); it != d.end(); ++it)  // whatever else the comparison recorded

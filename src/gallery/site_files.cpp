@@ -154,11 +154,14 @@ struct CaseWriter {
     }
 
     void addMasksAndData() {
-        if (fs::exists(source("roi.png"))) {
-            out.roiMask = rel("roi.png");
-            copyInto(source("roi.png"), target(out.roiMask));
+        // The AO ROI, else the GI one (a comparison of GI methods alone writes only roi_gi.png).
+        for (const char* name : {"roi.png", "roi_gi.png"}) {
+            if (!fs::exists(source(name))) continue;
+            out.roiMask = rel(name);
+            copyInto(source(name), target(out.roiMask));
             out.roiOutline = rel("roi_outline.png");
-            writePng(out.roiOutline, roiOutline(readImage(source("roi.png").string())));
+            writePng(out.roiOutline, roiOutline(readImage(source(name).string())));
+            break;
         }
         if (fs::exists(source("error_legend.png"))) {
             out.legend = rel("error_legend.png");
