@@ -18,8 +18,8 @@ const SettingsTable<BounceSettings>& bounceSettings() {
     static const auto table =
         SettingsTable<BounceSettings>()
             .integer("vct.bounces", &BounceSettings::bounces, 0, 8,
-                     "extra diffuse bounces traced between voxels (dense grid only; the vdb backend and clipmaps "
-                     "inject direct light only)")
+                     "extra diffuse bounces traced between voxels (dense and vdb grids; clipmaps inject direct "
+                     "light only)")
             .flag("vct.bounce.sky", &BounceSettings::sky, "bounce cones that escape see the sky radiance");
     return table;
 }

@@ -48,7 +48,7 @@ struct BounceSettings {
 const SettingsTable<BounceSettings>& bounceSettings();
 int readVctBounces(const ParamMap& params);  // bounceSettings().read(params).bounces
 
-// For volumes that hold direct light only (the vdb backend, clipmaps): reads vct.bounces
+// For volumes that hold direct light only (clipmaps): reads vct.bounces
 // and, when the volume `injects`, refuses an explicit request for bounces with
 // UsageError naming `where`. The default is not a request.
 void refuseVctBounces(const ParamMap& params, bool injects, const std::string& where);

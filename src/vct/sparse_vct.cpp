@@ -1,19 +1,29 @@
 #include "vct/sparse_vct.h"
 
+#include "cone/cone_bounce.h"
+
 #include "vct/vct_passes.h"
+#include "vct/voxel_region.h"
 #include "vct/voxel_volume.h"
 
 namespace vct {
 
-SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache) {
+SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache, const ConeSettings& cone) {
     SparseFrame& f = ctx.frame.get<SparseFrame>("vct.sparse");
     if (f.voxels) return f;
     const RenderRequest& r = ctx.request;
     const bool inject = ctx.plan.runs(kPassInject);
-    auto& slot = cache.grids[voxelGridKey(r, inject, false)];
+    // The dense path's choices, so that the backends differ only in storage and sampling:
+    // its region (fit to the view for AO) and its directional levels.
+    const VoxelRegion region = chooseVoxelRegion(r, ctx.scene, ctx.gbuffer, cone.apertureDeg, cone.offsetVoxels);
+    SparseBuildOptions options;
+    options.region = region.bounds;
+    options.anisotropic = cone.anisotropic;
+    auto& slot = cache.grids[voxelGridKey(r, inject, options.anisotropic) + ";region=" + boundsKey(region.bounds)];
     if (!slot || !r.reuseVoxels) {
         auto scope = ctx.timer.scope("voxelize", false);
-        slot = std::make_shared<SparseVoxelScene>(buildSparseVoxels(ctx.scene, r.voxelRes, inject, r.sky, r.params));
+        slot = std::make_shared<SparseVoxelScene>(
+            buildSparseVoxels(ctx.scene, r.voxelRes, inject, r.sky, r.params, options));
         ctx.runCounts["voxelize"]++;
     }
     f.voxels = slot;
@@ -27,7 +37,10 @@ SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache) {
                            {"voxelize_s", sv.stats.voxelizeSeconds},
                            {"inject_s", sv.stats.injectSeconds},
                            {"levels_s", sv.stats.levelsSeconds},
-                           {"bounces", 0}};  // the sparse path injects direct light only
+                           {"mips", sv.anisotropic() ? "anisotropic" : "isotropic"},
+                           {"region", region.toJson()},
+                           {"bounce_s", sv.stats.bounceSeconds},
+                           {"bounces", inject ? readVctBounces(r.params) : 0}};
     for (const GBufferPoint& g : readGBufferPoints(*ctx.gbuffer, true)) {
         SparsePoint p;
         p.position = g.position;

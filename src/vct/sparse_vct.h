@@ -1,5 +1,6 @@
 // --backend vdb: sparse OpenVDB voxels and the CPU cone tracer (src/vdb), on the same
-// G-buffer points as every other method. Whole-scene grid, isotropic levels, direct light only.
+// G-buffer points as every other method. The dense path's region and directional levels; direct
+// light only (no bounces between voxels).
 #pragma once
 
 #include "cone/cone_settings.h"
@@ -27,7 +28,7 @@ struct SparseFrame {
 
 // The render's sparse grids and points (built once per render, the grids reused across the
 // session unless request.reuseVoxels is false); fills extra["voxels"].
-SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache);
+SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache, const ConeSettings& cone);
 
 // The cone pass of `kind` over the sparse grids: AO into kAo, GI into kGiIndirect.
 void traceSparse(MethodContext& ctx, MethodKind kind, const SparseFrame& frame, const ConeSettings& cone);

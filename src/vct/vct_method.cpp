@@ -24,17 +24,16 @@ void declareVoxelPasses(const PlanContext& ctx, PassDeclarations& d) {
     const RenderRequest& r = ctx.request;
     d.add({kPassVoxelize, {}, {kVoxels}, "world-space occupancy for cone tracing; " + voxelRegionExplanation(r)});
     // Without lights or emission the voxels still carry sky light once it bounces between
-    // them (dense grid only: the vdb backend and clipmaps hold direct light only).
+    // them (dense and sparse grids: clipmaps hold direct light only).
     const bool gi = isVct(r.gi);
-    const bool skyBounces = gi && r.sky > 0.f && r.backend != "vdb" && clipmapLevelCount(r) == 0 &&
-                            readVctBounces(r.params) > 0;
+    const bool skyBounces = gi && r.sky > 0.f && clipmapLevelCount(r) == 0 && readVctBounces(r.params) > 0;
     const bool radiance = gi && (ctx.lights() || ctx.scene.hasEmission || skyBounces);
     if (!gi)
         d.skip(kPassInject, "AO needs opacity only, not radiance (no --gi vct)");
     else if (!radiance)
         d.skip(kPassInject,
                "the scene has no lights and no emission, and no sky light bounces between voxels (--sky 0, "
-               "vct.bounces=0, --backend vdb or clipmaps): cones see the sky directly");
+               "vct.bounces=0 or clipmaps): cones see the sky directly");
     else if (!ctx.lights() && !ctx.scene.hasEmission)
         d.add({kPassInject, {kVoxels}, {kVoxelRadiance},
                "no lights or emission: empty direct light, then vct.bounces bounces of the sky light between the "
@@ -92,7 +91,7 @@ void executeVct(MethodContext& ctx, MethodKind kind) {
     const ConeSettings cone = readConeSettings(r.params);
     VctSession& session = ctx.session.get<VctSession>("vct");
     if (r.backend == "vdb") {
-        traceSparse(ctx, kind, sparseFrameFor(ctx, session.sparse), cone);
+        traceSparse(ctx, kind, sparseFrameFor(ctx, session.sparse, cone), cone);
         return;
     }
     VctFrame& frame = ctx.frame.get<VctFrame>("vct");

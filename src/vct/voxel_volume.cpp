@@ -20,13 +20,13 @@ std::string voxelGridKey(const RenderRequest& r, bool inject, bool aniso) {
     return k;
 }
 
-namespace {
-
 std::string boundsKey(const Bounds3& b) {
     std::string k;
     for (int a = 0; a < 3; ++a) k += std::to_string(b.min[a]) + "," + std::to_string(b.max[a]) + ",";
     return k;
 }
+
+namespace {
 
 // A scene with no lights and no emission injects nothing: its voxels emit no radiance, and
 // GI cones see only the sky through them. A 1^3 zero texture (zero border) stands in for

@@ -31,6 +31,8 @@ struct VoxelVolumeCache {
 
 // A key of everything a grid depends on: two requests with the same key share one grid.
 std::string voxelGridKey(const RenderRequest& request, bool inject, bool aniso);
+// The part of a grid's key that names its world box.
+std::string boundsKey(const Bounds3& bounds);
 
 // Builds (or reuses, unless request.reuseVoxels is false) the volume of this render.
 VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVolumeCache& cache);

@@ -1,6 +1,7 @@
 // The CPU cone tracer: the shaders' march itself (cone/cone_march_shared.h) and tangent frame
 // (common/tangent_frame.h) over the sparse levels instead of 3D textures, with
-// shaders/cone/cone_common.glsl's gather and surface test.
+// shaders/cone/cone_common.glsl's gather and surface test and cone_march.glsl's sampling of
+// the directional levels when the voxels have them.
 #include "vdb/sparse_cone.h"
 
 #include "common/tangent_frame.h"
@@ -10,8 +11,10 @@
 
 #include <openvdb/tools/Interpolation.h>
 #include <tbb/blocked_range.h>
+#include <openvdb/tree/LeafManager.h>
 #include <tbb/parallel_for.h>
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -22,6 +25,7 @@ namespace {
 
 using OpacityAcc = openvdb::tree::ValueAccessor<const openvdb::FloatTree, false>;  // unregistered: read-only trees
 using RadianceAcc = openvdb::tree::ValueAccessor<const openvdb::Vec3STree, false>;
+using ConstAcc3 = RadianceAcc;
 
 struct MarchParams {
     gpu::ConeMarch march;
@@ -36,6 +40,9 @@ struct LevelSampler {
     std::vector<std::unique_ptr<OpacityAcc>> opacity;
     std::vector<std::unique_ptr<RadianceAcc>> radiance;  // empty for AO
     std::vector<std::unique_ptr<RadianceAcc>> normal;    // GI only: normal levels (facing test)
+    // The directional levels per direction (+X, -X, +Y, -Y, +Z, -Z); empty when isotropic.
+    std::array<std::vector<std::unique_ptr<OpacityAcc>>, 6> dirOpacity;
+    std::array<std::vector<std::unique_ptr<RadianceAcc>>, 6> dirRadiance;  // GI only
 
     LevelSampler(const SparseVoxelScene& v, const MarchParams& params, bool gi) : mp(&params) {
         for (const auto& g : v.opacityLevels) opacity.push_back(std::make_unique<OpacityAcc>(g->tree()));
@@ -43,6 +50,11 @@ struct LevelSampler {
             for (const auto& g : v.radianceLevels) radiance.push_back(std::make_unique<RadianceAcc>(g->tree()));
             for (const auto& g : v.normalLevels) normal.push_back(std::make_unique<RadianceAcc>(g->tree()));
         }
+        for (size_t d = 0; d < 6; ++d)
+            for (const auto& l : v.directional[d]) {
+                dirOpacity[d].push_back(std::make_unique<OpacityAcc>(l.opacity->tree()));
+                if (gi) dirRadiance[d].push_back(std::make_unique<RadianceAcc>(l.radiance->tree()));
+            }
     }
 
     // Level texel coordinates of voxel-space p: GL texel centres (i + 0.5) / size_k, i.e.
@@ -80,20 +92,48 @@ struct LevelSampler {
         return gpu::cone_leaving(p, d, mp->res, 1.5f * texel);
     }
 
-    // textureLod: premultiplied radiance (GI) and opacity at footprint 2^lod (isotropic: d unused).
-    glm::vec4 sample(const glm::vec3& p, const glm::vec3&, float lod) {
-        return acrossLevels(lod, [&](int level) { return sampleLevel(p, level); });
+    // Trilinear at pyramid level `level` (>= 1) of direction d's levels.
+    glm::vec4 sampleDirectional(const glm::vec3& p, size_t d, int level) {
+        const openvdb::Vec3R xyz = levelCoord(p, level);
+        const float a = openvdb::tools::BoxSampler::sample(*dirOpacity[d][size_t(level - 1)], xyz);
+        if (dirRadiance[d].empty()) return glm::vec4(0.f, 0.f, 0.f, a);
+        const openvdb::Vec3s c = openvdb::tools::BoxSampler::sample(*dirRadiance[d][size_t(level - 1)], xyz);
+        return glm::vec4(c[0], c[1], c[2], a);
+    }
+
+    // cone_sampleAniso: the directional levels at footprint 2^lod (lod >= 1) as seen by a cone
+    // travelling along d, each axis's level chosen by the sign of d and blended as optical depth.
+    glm::vec4 sampleAniso(const glm::vec3& p, const glm::vec3& d, float lod) {
+        const size_t dx = d.x >= 0.f ? 0 : 1, dy = d.y >= 0.f ? 2 : 3, dz = d.z >= 0.f ? 4 : 5;
+        auto along = [&](size_t dir) {
+            return acrossLevels(std::max(lod, 1.f), [&](int level) { return sampleDirectional(p, dir, level); });
+        };
+        return gpu::cone_blendDirectional(gpu::cone_anisoWeights(d), along(dx), along(dy), along(dz));
+    }
+
+    // textureLod: premultiplied radiance (GI) and opacity at footprint 2^lod. With directional
+    // levels, cone_sampleGrid: below lod 1 the base level blended into the first directional
+    // one, as trilinear filtering blends two mip levels.
+    glm::vec4 sample(const glm::vec3& p, const glm::vec3& d, float lod) {
+        if (dirOpacity[0].empty()) return acrossLevels(lod, [&](int level) { return sampleLevel(p, level); });
+        glm::vec4 directional = sampleAniso(p, d, lod);
+        if (lod < 1.f) directional = glm::mix(sampleLevel(p, 0), directional, std::max(lod, 0.f));
+        return directional;
     }
 
     // GI: cone_facing, vox_facingWeight of the occupied voxels' mean normal at the sample's
-    // level, the filtered normal over the filtered coverage (the sample's opacity). AO: 1.
-    float facing(const glm::vec3& p, const glm::vec3& d, float lod, const glm::vec4& s) {
+    // level: the filtered normal over the filtered coverage (the isotropic opacity level, as
+    // the GPU's normal mips carry it; with directional levels the sample's alpha is not the
+    // coverage). AO: 1.
+    float facing(const glm::vec3& p, const glm::vec3& d, float lod, const glm::vec4&) {
         if (radiance.empty()) return 1.f;
-        const glm::vec3 n = acrossLevels(lod, [&](int level) {
-            const openvdb::Vec3s v = openvdb::tools::BoxSampler::sample(*normal[size_t(level)], levelCoord(p, level));
-            return glm::vec3(v[0], v[1], v[2]);
+        const glm::vec4 n = acrossLevels(lod, [&](int level) {
+            const openvdb::Vec3R xyz = levelCoord(p, level);
+            const openvdb::Vec3s v = openvdb::tools::BoxSampler::sample(*normal[size_t(level)], xyz);
+            const float coverage = openvdb::tools::BoxSampler::sample(*opacity[size_t(level)], xyz);
+            return glm::vec4(v[0], v[1], v[2], coverage);
         });
-        return gpu::vox_facingWeight(n / std::max(s.a, 1e-4f), d);
+        return gpu::vox_facingWeight(glm::vec3(n) / std::max(n.w, 1e-4f), d);
     }
 };
 
@@ -113,12 +153,12 @@ struct Gather {
     float occlusion = 0.f;
 };
 
-Gather gather(LevelSampler& sampler, const SparseVoxelScene& v, const std::vector<glm::vec4>& cones,
-              const glm::vec3& pWorld, const glm::vec3& n, const glm::vec3& ng, float maxDist, float falloff,
-              float sky) {
-    const glm::vec3 p = glm::vec3(v.voxelFromWorld * glm::vec4(pWorld, 1.f));
+// cone_gatherVoxel from voxel-space p: the cones start `offset` voxels along ng, `h0` is that
+// start's height above the tangent plane for the plane limit.
+Gather gatherVoxel(LevelSampler& sampler, const std::vector<glm::vec4>& cones, const glm::vec3& p,
+                   const glm::vec3& n, const glm::vec3& ng, float offset, float h0, float maxDist, float falloff,
+                   float sky) {
     const glm::mat3 frame = gpu::frame_fromZ(n);
-    const float offset = sampler.mp->offset;
     const glm::vec3 origin = p + ng * offset;
     Gather g;
     for (const glm::vec4& cone : cones) {
@@ -128,12 +168,20 @@ Gather gather(LevelSampler& sampler, const SparseVoxelScene& v, const std::vecto
             g.occlusion += cone.w;
             continue;
         }
-        const gpu::ConeResult r =
-            gpu::cone_marchVolume(sampler, sampler.mp->march, origin, d, offset, rise, maxDist, falloff);
+        const gpu::ConeResult r = gpu::cone_marchVolume(sampler, sampler.mp->march, origin, d, h0, rise, maxDist, falloff);
         g.radiance += cone.w * (r.radiance + (1.f - r.alpha) * sky);
         g.occlusion += cone.w * r.alpha;
     }
     return g;
+}
+
+// The pixel cones' gather (cone_gather): from the surface point, offset and plane height alike.
+Gather gather(LevelSampler& sampler, const SparseVoxelScene& v, const std::vector<glm::vec4>& cones,
+              const glm::vec3& pWorld, const glm::vec3& n, const glm::vec3& ng, float maxDist, float falloff,
+              float sky) {
+    const glm::vec3 p = glm::vec3(v.voxelFromWorld * glm::vec4(pWorld, 1.f));
+    const float offset = sampler.mp->offset;
+    return gatherVoxel(sampler, cones, p, n, ng, offset, offset, maxDist, falloff, sky);
 }
 
 MarchParams marchParams(const SparseVoxelScene& v, const ConeSettings& s) {
@@ -208,6 +256,52 @@ std::vector<glm::vec3> sparseConeGI(const SparseVoxelScene& voxels, const std::v
         }
     });
     return gi;
+}
+
+void traceSparseBounces(SparseVoxelScene& voxels, float sky, const ConeSettings& settings, int bounces,
+                        bool anisotropic) {
+    if (bounces <= 0) return;
+    if (!voxels.injected() || !voxels.albedo || !voxels.normal)
+        throw InternalError("traceSparseBounces", "the sparse voxels have no radiance (inject first)");
+    if (!(sky >= 0.f) || !std::isfinite(sky))
+        throw InternalError("traceSparseBounces", "sky radiance " + std::to_string(sky) + " must be finite and >= 0");
+    settings.validate();
+    // The direct term stays fixed; each bounce re-gathers from the previous total.
+    const openvdb::Vec3SGrid::Ptr direct = voxels.radiance;
+    const openvdb::FloatTree& opacity = voxels.opacity->tree();
+    const std::vector<glm::vec4> cones = diffuseConeSet(settings.coneCount);
+    const float maxDist = 2.f * glm::length(glm::vec3(voxels.resolution));
+    for (int bounce = 0; bounce < bounces; ++bounce) {
+        buildSparseLevels(voxels, anisotropic);
+        const MarchParams mp = marchParams(voxels, settings);
+        openvdb::Vec3SGrid::Ptr next = direct->deepCopy();
+        openvdb::tree::LeafManager<openvdb::Vec3STree> leaves(next->tree());
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.leafCount()), [&](const tbb::blocked_range<size_t>& r) {
+            LevelSampler sampler(voxels, mp, true);
+            ConstAcc3 normalAcc(voxels.normal->tree()), albedoAcc(voxels.albedo->tree());
+            OpacityAcc opacityAcc(opacity);
+            for (size_t li = r.begin(); li != r.end(); ++li)
+                for (auto it = leaves.leaf(li).beginValueOn(); it; ++it) {
+                    const openvdb::Coord ijk = it.getCoord();
+                    const float a = opacityAcc.getValue(ijk);
+                    const openvdb::Vec3s nv = normalAcc.getValue(ijk);
+                    const glm::vec3 n(nv[0], nv[1], nv[2]);
+                    // bounce_gathers: radiance and a normal (faces that cancel keep their direct light).
+                    if (!(a > 0.f) || glm::dot(n, n) < 0.25f) continue;
+                    const glm::vec3 nn = glm::normalize(n);
+                    const glm::vec3 centre = glm::vec3(ijk.x(), ijk.y(), ijk.z()) + 0.5f;
+                    const Gather g =
+                        gatherVoxel(sampler, cones, centre, nn, nn, mp.offset + 0.5f, mp.offset, maxDist, 0.f, sky);
+                    const openvdb::Vec3s albedo = albedoAcc.getValue(ijk), L = it.getValue();
+                    glm::vec3 out;
+                    for (int c = 0; c < 3; ++c) out[c] = (L[c] / a + albedo[c] * g.radiance[c]) * a;
+                    it.setValue(openvdb::Vec3s(out.x, out.y, out.z));
+                }
+        });
+        next->setName(direct->getName());
+        voxels.radiance = next;
+        voxels.radianceLevels = {next};
+    }
 }
 
 }  // namespace vct

@@ -1,5 +1,6 @@
-// Coarser levels of the sparse voxels (the CPU twin of shaders/voxelize/mip_iso.glsl with
-// mip_common.glsl's child ranges) and buildSparseVoxels, which runs the whole pipeline.
+// Coarser levels of the sparse voxels (the CPU twin of shaders/voxelize/mip_iso.glsl and
+// mip_aniso.glsl with mip_common.glsl's child ranges) and buildSparseVoxels, which runs the
+// whole pipeline.
 //
 // A level-k voxel is active when any of its children is; its value is the mean of its
 // children over the full child block (2 per axis, 3 at the last voxel of an axis whose finer
@@ -8,6 +9,8 @@
 // sums its children in a fixed order: the levels are deterministic.
 #include "vdb/sparse_detail.h"
 #include "cone/cone_bounce.h"
+#include "cone/cone_settings.h"
+#include "vdb/sparse_cone.h"
 #include "core/errors.h"
 #include "voxelize/voxel_settings.h"
 
@@ -130,18 +133,99 @@ void buildLevel(SparseVoxelScene& voxels, int level) {
     }
 }
 
+// Directional level `level` (>= 1) for every direction d, as mip_aniso.glsl: from level 0's
+// opacity and radiance when level == 1, else from directional[d][level - 2]. The parents are
+// the isotropic level's active voxels (the same topology: a parent with any child).
+void buildDirectionalLevel(SparseVoxelScene& voxels, int level) {
+    const glm::ivec3 src = voxels.levelSize(level - 1), dst = voxels.levelSize(level);
+    const bool hasRadiance = voxels.injected();
+    const openvdb::FloatTree& parents = voxels.opacityLevels[size_t(level)]->tree();
+    for (int d = 0; d < 6; ++d) {
+        const int a = d / 2, b = (a + 1) % 3, c = (a + 2) % 3;
+        const bool forward = d % 2 == 0;
+        const SparseVoxelScene::DirectionalLevel* from =
+            level == 1 ? nullptr : &voxels.directional[size_t(d)][size_t(level - 2)];
+        const openvdb::FloatTree& srcOpacity = from ? from->opacity->tree() : voxels.opacityLevels[0]->tree();
+        const openvdb::Vec3STree* srcRadiance =
+            !hasRadiance ? nullptr : from ? &from->radiance->tree() : &voxels.radianceLevels[0]->tree();
+
+        auto opacity = std::make_shared<openvdb::FloatTree>(parents, 0.f, 0.f, openvdb::TopologyCopy());
+        std::shared_ptr<openvdb::Vec3STree> radiance;
+        if (hasRadiance)
+            radiance = std::make_shared<openvdb::Vec3STree>(parents, openvdb::Vec3s(0.f), openvdb::Vec3s(0.f),
+                                                            openvdb::TopologyCopy());
+        openvdb::tree::LeafManager<openvdb::FloatTree> opacityLeaves(*opacity);
+        std::unique_ptr<openvdb::tree::LeafManager<openvdb::Vec3STree>> radianceLeaves;
+        if (radiance) radianceLeaves = std::make_unique<openvdb::tree::LeafManager<openvdb::Vec3STree>>(*radiance);
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, opacityLeaves.leafCount()), [&](const tbb::blocked_range<size_t>& r) {
+            ConstAcc<openvdb::FloatTree> opAcc(srcOpacity);
+            std::unique_ptr<ConstAcc<openvdb::Vec3STree>> radAcc;
+            if (srcRadiance) radAcc = std::make_unique<ConstAcc<openvdb::Vec3STree>>(*srcRadiance);
+            for (size_t li = r.begin(); li != r.end(); ++li) {
+                auto& opLeaf = opacityLeaves.leaf(li);
+                for (auto it = opLeaf.beginValueOn(); it; ++it) {
+                    openvdb::Coord lo, hi;
+                    childRange(it.getCoord(), src, dst, lo, hi);
+                    // Premultiplied (radiance, alpha) summed over the lines along axis a.
+                    glm::vec4 sum(0.f);
+                    const int count = hi[a] - lo[a] + 1;
+                    for (int j = lo[c]; j <= hi[c]; ++j)
+                        for (int i = lo[b]; i <= hi[b]; ++i) {
+                            glm::vec4 acc(0.f);
+                            for (int k = 0; k < count; ++k) {
+                                openvdb::Coord p;
+                                p[a] = forward ? lo[a] + k : hi[a] - k;
+                                p[b] = i;
+                                p[c] = j;
+                                glm::vec4 v(0.f, 0.f, 0.f, opAcc.getValue(p));
+                                if (radAcc) {
+                                    const openvdb::Vec3s L = radAcc->getValue(p);
+                                    v = glm::vec4(L[0], L[1], L[2], v.w);
+                                }
+                                acc += (1.f - acc.w) * v;
+                            }
+                            sum += acc;
+                        }
+                    const float lines = float((hi[b] - lo[b] + 1) * (hi[c] - lo[c] + 1));
+                    it.setValue(sum.w / lines);
+                    if (radianceLeaves)
+                        radianceLeaves->leaf(li).setValueOnly(
+                            it.pos(), openvdb::Vec3s(sum.x / lines, sum.y / lines, sum.z / lines));
+                }
+            }
+        });
+        SparseVoxelScene::DirectionalLevel out;
+        out.opacity = openvdb::FloatGrid::create(opacity);
+        out.opacity->setName("opacity_dir" + std::to_string(d) + "_L" + std::to_string(level));
+        out.opacity->setGridClass(openvdb::GRID_FOG_VOLUME);
+        out.opacity->setTransform(levelTransform(voxels, level));
+        if (radiance) {
+            out.radiance = openvdb::Vec3SGrid::create(radiance);
+            out.radiance->setName("radiance_dir" + std::to_string(d) + "_L" + std::to_string(level));
+            out.radiance->setTransform(levelTransform(voxels, level));
+        }
+        voxels.directional[size_t(d)].push_back(out);
+    }
+}
+
 size_t product(const glm::ivec3& v) { return size_t(v.x) * size_t(v.y) * size_t(v.z); }
 
 }  // namespace
 
-void buildSparseLevels(SparseVoxelScene& voxels) {
+void buildSparseLevels(SparseVoxelScene& voxels, bool anisotropic) {
     if (!voxels.opacity) throw InternalError("buildSparseLevels", "the scene is not voxelized");
+    if (anisotropic && voxels.levels < 2)
+        throw InternalError("buildSparseLevels", "voxel grid too small for directional levels");
     const auto t0 = std::chrono::steady_clock::now();
     voxels.opacityLevels.resize(1);
     if (voxels.injected()) voxels.radianceLevels.resize(1);
     voxels.normalLevels.clear();
     if (voxels.injected()) voxels.normalLevels = {voxels.normal};
-    for (int level = 1; level < voxels.levels; ++level) buildLevel(voxels, level);
+    for (auto& levels : voxels.directional) levels.clear();
+    for (int level = 1; level < voxels.levels; ++level) {
+        buildLevel(voxels, level);
+        if (anisotropic) buildDirectionalLevel(voxels, level);
+    }
     voxels.stats.levelsSeconds = secondsSince(t0);
     updateSparseMemoryStats(voxels);
 }
@@ -154,6 +238,11 @@ void updateSparseMemoryStats(SparseVoxelScene& voxels) {
     for (const auto& g : voxels.opacityLevels) s.memoryBytes += size_t(g->memUsage());
     for (const auto& g : voxels.radianceLevels) s.memoryBytes += size_t(g->memUsage());
     for (size_t k = 1; k < voxels.normalLevels.size(); ++k) s.memoryBytes += size_t(voxels.normalLevels[k]->memUsage());
+    for (const auto& levels : voxels.directional)
+        for (const auto& l : levels) {
+            s.memoryBytes += size_t(l.opacity->memUsage());
+            if (l.radiance) s.memoryBytes += size_t(l.radiance->memUsage());
+        }
     for (const auto* g : {&voxels.albedo, &voxels.normal, &voxels.emission})
         if (*g) s.memoryBytes += size_t((*g)->memUsage());
     // Dense equivalent of the same channels in float32: per level, opacity (4 B) and radiance
@@ -171,18 +260,35 @@ void updateSparseMemoryStats(SparseVoxelScene& voxels) {
 
 SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject, float sky,
                                    const ParamMap& params) {
+    return buildSparseVoxels(scene, voxelRes, inject, sky, params, SparseBuildOptions{});
+}
+
+SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject, float sky,
+                                   const ParamMap& params, const SparseBuildOptions& options) {
     if (!std::isfinite(sky) || sky < 0.f)
         throw InternalError("buildSparseVoxels", "sky radiance must be finite and >= 0");
     // The GPU path's keys, read for parity (the sparse grids always hold float32).
     const float offset = voxelSettings().read(params).injectOffset;
-    refuseVctBounces(params, inject, "--backend vdb");  // the sparse path injects direct light only
-    bounceSettings().read(params);
-    SparseVoxelScene voxels = voxelizeSparse(scene, voxelRes);
-    if (inject) injectSparseRadiance(voxels, scene, offset);
-    buildSparseLevels(voxels);
+    const BounceSettings bounce = bounceSettings().read(params);
+    SparseVoxelScene voxels =
+        voxelizeSparse(scene, options.region.empty() ? scene.bounds : options.region, voxelRes);
+    if (inject) {
+        injectSparseRadiance(voxels, scene, offset);
+        // The bounces trace with the pixel cones' settings, as the GPU path's.
+        const auto t0 = std::chrono::steady_clock::now();
+        traceSparseBounces(voxels, bounce.sky ? sky : 0.f, readConeSettings(params), bounce.bounces,
+                           options.anisotropic);
+        voxels.stats.bounceSeconds = secondsSince(t0);
+    }
+    buildSparseLevels(voxels, options.anisotropic);
     // Collapse constant blocks into tiles (tolerance 0: values are kept exactly).
     for (auto& g : voxels.opacityLevels) openvdb::tools::prune(g->tree());
     for (auto& g : voxels.radianceLevels) openvdb::tools::prune(g->tree());
+    for (auto& levels : voxels.directional)
+        for (auto& l : levels) {
+            openvdb::tools::prune(l.opacity->tree());
+            if (l.radiance) openvdb::tools::prune(l.radiance->tree());
+        }
     for (auto* g : {&voxels.albedo, &voxels.normal, &voxels.emission}) openvdb::tools::prune((*g)->tree());
     updateSparseMemoryStats(voxels);
     return voxels;

@@ -193,10 +193,14 @@ void checkScene(const Scene& scene) {
 }  // namespace
 
 SparseVoxelScene voxelizeSparse(const Scene& scene, int voxelRes) {
+    return voxelizeSparse(scene, scene.bounds, voxelRes);
+}
+
+SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int voxelRes) {
     ensureOpenVdb();
     checkScene(scene);
     const auto t0 = std::chrono::steady_clock::now();
-    const VoxelGrid layout = makeGridLayout(scene.bounds, voxelRes);
+    const VoxelGrid layout = makeGridLayout(region, voxelRes);
     SparseVoxelScene out;
     out.resolution = layout.resolution;
     out.voxelSize = layout.voxelSize;

@@ -10,7 +10,11 @@
 //   through the level-0 opacity (same offsets, units and spot falloff as inject.glsl), stored
 //   premultiplied (rgb * opacity; its alpha is the opacity grid of the same level);
 // - levels 1..: the mean of the 2x2x2 children (3 along an axis at its last voxel when the
-//   finer size is odd, as mip_common.glsl), empty children count as 0. Isotropic only.
+//   finer size is odd, as mip_common.glsl), empty children count as 0;
+// - optionally the directional levels of mip_aniso.glsl (Crassin 2011): levels 1.. once per
+//   direction of travel (+X, -X, +Y, -Y, +Z, -Z), the children of each line along the axis
+//   composited front to back and the lines across it averaged, the first from level 0 and
+//   each next from the same direction's previous level.
 //
 // Index space: level-k voxel (i, j, k) covers voxel units [i, i + 1] * resolution / size_k
 // (size_k = max(resolution >> k, 1) per axis, as GL mip sizes); each grid's transform maps it
@@ -24,6 +28,7 @@
 #include <glm/glm.hpp>
 #include <openvdb/openvdb.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -38,6 +43,7 @@ struct SparseVoxelStats {
     double voxelizeSeconds = 0.0;
     double injectSeconds = 0.0;
     double levelsSeconds = 0.0;
+    double bounceSeconds = 0.0;  // vct.bounces, levels rebuilt for each bounce included
 };
 
 struct SparseVoxelScene {
@@ -60,9 +66,19 @@ struct SparseVoxelScene {
     // the opacity level it is the occupied voxels' mean normal (GPU: the normal mips).
     std::vector<openvdb::Vec3SGrid::Ptr> normalLevels;
 
+    // The directional levels (mip_aniso.glsl), empty unless built: directional[d][k] is
+    // pyramid level k + 1 as seen by a cone travelling along direction d (+X, -X, +Y, -Y, +Z,
+    // -Z, the GPU's anisoRadiance order); radiance premultiplied, held when injected.
+    struct DirectionalLevel {
+        openvdb::FloatGrid::Ptr opacity;
+        openvdb::Vec3SGrid::Ptr radiance;  // null unless injected
+    };
+    std::array<std::vector<DirectionalLevel>, 6> directional;
+
     SparseVoxelStats stats;
 
     bool injected() const { return bool(radiance); }
+    bool anisotropic() const { return !directional[0].empty(); }
     // Voxels per axis of level k (GL mip sizes).
     glm::ivec3 levelSize(int level) const { return glm::max(resolution >> level, glm::ivec3(1)); }
 };
@@ -71,16 +87,28 @@ struct SparseVoxelScene {
 // [4, 1024]), optionally injects direct light + emission, and builds the levels. TBB parallel;
 // the result is bit-identical for any thread count. ParamMap keys (shared with the GPU path):
 //   vct.inject.offset    0..16 voxels, default 2: where shadow marches start along the normal.
-//   vct.bounces          must be 0 here (multi-bounce is GPU-only); throws otherwise.
-//   vct.bounce.sky, vct.voxel.precision: read for parity with the GPU path; the sparse grids
-//                        always hold float32.
+//   vct.bounces, vct.bounce.sky: the diffuse bounces between voxels (traceSparseBounces),
+//                        traced with the cone settings of `params`, as the GPU path's.
+//   vct.voxel.precision: read for parity with the GPU path; the sparse grids always hold
+//                        float32.
 SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject, float sky,
                                    const ParamMap& params);
 
+// What the GPU path chooses per render and the sparse one follows: the grid's world box (the
+// dense path's region, voxelRes voxels along its longest axis) and the directional levels.
+struct SparseBuildOptions {
+    Bounds3 region;            // empty: the scene's bounds
+    bool anisotropic = false;  // also build the directional levels (the GPU path's vct.aniso)
+};
+SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject, float sky,
+                                   const ParamMap& params, const SparseBuildOptions& options);
+
 // The steps of buildSparseVoxels, for tests and tools.
 SparseVoxelScene voxelizeSparse(const Scene& scene, int voxelRes);
+// Over `region` instead of the scene's bounds: triangles outside it are left out.
+SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int voxelRes);
 void injectSparseRadiance(SparseVoxelScene& voxels, const Scene& scene, float shadowOffsetVoxels);
-void buildSparseLevels(SparseVoxelScene& voxels);
+void buildSparseLevels(SparseVoxelScene& voxels, bool anisotropic = false);
 // Recomputes stats.memoryBytes / denseBytes / activeVoxels from the grids held.
 void updateSparseMemoryStats(SparseVoxelScene& voxels);
 

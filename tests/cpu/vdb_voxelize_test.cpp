@@ -204,6 +204,7 @@ TEST(VdbVoxelize, InjectedRadianceIsResolutionIndependent) {
     const glm::vec3 toSun = -s.lights[0].direction;
     for (int res : {32, 64}) {
         ParamMap params;
+        params.set("vct.bounces", "0");  // direct light alone
         SparseVoxelScene v = buildSparseVoxels(s, res, true, 1.f, params);
         glm::vec3 p = (glm::vec3(-3.3f, 0.f, -3.3f) - v.origin) / v.voxelSize;
         openvdb::Coord ijk(int(std::floor(p.x)), int(std::floor(p.y)), int(std::floor(p.z)));
@@ -217,6 +218,35 @@ TEST(VdbVoxelize, InjectedRadianceIsResolutionIndependent) {
         EXPECT_GT(v.stats.memoryBytes, 0u);
         EXPECT_GT(v.stats.denseBytes, 0u);
     }
+}
+
+// Bounces only add light: each voxel's radiance is its direct light plus albedo times what it
+// gathers (>= 0), the shadowed floor beside the box receives light from the box's lit faces
+// and the sunlit floor, and a second bounce adds less than the first (albedo < 1).
+TEST(VdbVoxelize, BouncesAddLightThatShrinksWithEachBounce) {
+    Scene s = floorAndBox();
+    std::vector<SparseVoxelScene> v;
+    for (const char* bounces : {"0", "1", "2"}) {
+        ParamMap params;
+        params.set("vct.bounces", bounces);
+        v.push_back(buildSparseVoxels(s, 32, true, 0.f, params));
+    }
+    double total[3] = {0, 0, 0};
+    for (int b = 0; b < 3; ++b)
+        for (auto it = v[size_t(b)].radiance->tree().cbeginValueOn(); it; ++it) {
+            const openvdb::Vec3s L = *it;
+            total[b] += L[0] + L[1] + L[2];
+            if (b == 0) continue;
+            const openvdb::Vec3s L0 = v[0].radiance->tree().getValue(it.getCoord());
+            for (int c = 0; c < 3; ++c) ASSERT_GE(L[c], L0[c] - 1e-6f);
+        }
+    glm::vec3 sh = (glm::vec3(1.2f, 0.f, 1.1f) - v[0].origin) / v[0].voxelSize;
+    const openvdb::Coord shadowed(int(std::floor(sh.x)), int(std::floor(sh.y)), int(std::floor(sh.z)));
+    EXPECT_EQ(v[0].radiance->tree().getValue(shadowed), openvdb::Vec3s(0.f));
+    EXPECT_GT(v[1].radiance->tree().getValue(shadowed)[0], 0.f);
+    EXPECT_GT(total[1], total[0]);
+    EXPECT_GT(total[2], total[1]);
+    EXPECT_LT(total[2] - total[1], total[1] - total[0]);
 }
 
 // Levels against an independent dense box filter with GL's child ranges.
@@ -293,7 +323,7 @@ TEST(VdbVoxelize, RejectsBadInput) {
     EXPECT_THROW(buildSparseVoxels(s, 2, false, 1.f, params), InternalError);
     EXPECT_THROW(buildSparseVoxels(s, 32, true, -1.f, params), InternalError);
     ParamMap bounces;
-    bounces.set("vct.bounces", "1");
+    bounces.set("vct.bounces", "9");  // outside [0, 8]
     EXPECT_THROW(buildSparseVoxels(s, 32, true, 1.f, bounces), UsageError);
     Scene bad = s;
     bad.positions[0].x = std::nanf("");

@@ -2,6 +2,7 @@
 // comparison voxelizes once, and the methods' errors against the reference on the
 // project's scenes and the off-screen occluder study (issues 3, 5 and 7).
 #include "eval/comparison.h"
+#include "eval/metrics.h"
 #include "gl/context.h"
 #include "gl/program_cache.h"
 #include "methods/registry.h"
@@ -191,5 +192,33 @@ TEST(Integration, OffscreenGiSeparatesScreenAndWorldSpace) {
         std::cerr << name << " roi pixels " << doc["roi_pixels_gi"] << " of " << valid << ", roi_rmse vct " << vct
                   << " ssil " << ssil << "\n";
         EXPECT_LT(vct, ssil);
+    }
+}
+
+// The two voxel backends on the renderer's defaults (the AO region fit, directional levels,
+// vct.bounces): the same images up to storage precision, AO and GI, on scenes with lights,
+// emission and off-screen parts.
+TEST(Integration, DenseAndSparseBackendsAgreeOnDefaults) {
+    for (const char* name : {"default", "offscreen_overhang", "offscreen_gi_emitter"}) {
+        SCOPED_TRACE(name);
+        Scene s = projectScene(name);
+        RenderSession session(s);
+        for (const bool gi : {false, true}) {
+            RenderRequest r = requestFor(s, 48);
+            r.ao = gi ? kNoMethod : "vct";
+            r.gi = gi ? "vct" : kNoMethod;
+            r.aovs = {gi ? "indirect" : "ao"};
+            RenderResult dense = session.render(r);
+            r.backend = "vdb";
+            RenderResult sparse = session.render(r);
+            GlContext::shared().checkErrors("integration: backends");
+            const Image& a = dense.aovs.at(r.aovs[0]);
+            const Image& b = sparse.aovs.at(r.aovs[0]);
+            const double rmse = computeErrorMetrics(b, a, nullptr, -1, 1.0).rmse;
+            std::cerr << name << (gi ? " GI" : " AO") << " dense vs sparse RMSE " << rmse << "\n";
+            EXPECT_LT(rmse, 0.01) << (gi ? "GI" : "AO");
+            EXPECT_EQ(dense.extra["voxels"]["region"]["min"], sparse.extra["voxels"]["region"]["min"]);
+            EXPECT_EQ(sparse.extra["voxels"]["mips"], "anisotropic");
+        }
     }
 }

@@ -4,6 +4,7 @@
 // indirect images must agree. The dense path stores half floats (R16F / RGBA16F) and samples
 // with the GPU's texture units; the sparse path holds float32 and samples with
 // tools::BoxSampler, so the images agree to a stated RMSE, not bit for bit.
+#include "cone/cone_bounce.h"
 #include "cone/cone_settings.h"
 #include "cone/cone_trace.h"
 #include "gl/context.h"
@@ -46,6 +47,8 @@ Scene boxesScene() {
     return s;
 }
 
+// Both paths built with the same parameters: isotropic levels and no bounces (the base
+// case), or the GPU path's defaults, directional levels and vct.bounces bounces.
 struct Fixture {
     Scene scene = boxesScene();
     GpuScene gpu;
@@ -56,21 +59,25 @@ struct Fixture {
     float sky = 0.5f;
     int res = 64;
 
-    Fixture() {
+    Fixture(bool anisotropic, int bounces) {
         GlContext& gl = GlContext::shared();
         gpu = uploadScene(scene);
-        params.set("vct.aniso", "0");
-        params.set("vct.bounces", "0");  // the sparse path injects direct light only
+        params.set("vct.aniso", anisotropic ? "1" : "0");
+        params.set("vct.bounces", std::to_string(bounces));
+        const ConeSettings cone = readConeSettings(params);
         grid = voxelizeScene(gpu, scene.bounds, res, params, timer);
         injectRadiance(grid, gpu, scene, params, timer);
-        buildMips(grid, false, timer);
+        traceVoxelBounces(grid, sky, cone, params, timer);
+        buildMips(grid, anisotropic, timer);
         gl.checkErrors("vdb_vs_gl: dense grid");
-        sparse = buildSparseVoxels(scene, res, true, sky, params);
+        SparseBuildOptions options;
+        options.anisotropic = anisotropic;
+        sparse = buildSparseVoxels(scene, res, true, sky, params, options);
     }
 };
 
 Fixture& fixture() {
-    static Fixture f;
+    static Fixture f(false, 0);
     return f;
 }
 
@@ -130,8 +137,7 @@ struct Images {
     std::vector<bool> valid;
 };
 
-Images renderBoth(float radius) {
-    Fixture& f = fixture();
+Images renderBoth(Fixture& f, float radius) {
     const int w = 64, h = 64;
     View view = makeView(f.scene.cameras[0], w, h);
     GBuffer gb = renderGBuffer(f.gpu, view, f.timer);
@@ -162,7 +168,7 @@ Images renderBoth(float radius) {
 
 TEST(VdbVsGl, AoAndIndirectAgree) {
     const float radius = 1.f;
-    Images im = renderBoth(radius);
+    Images im = renderBoth(fixture(), radius);
     double aoSq = 0, giSq = 0, giRef = 0, aoMax = 0;
     size_t n = 0;
     for (size_t i = 0; i < im.valid.size(); ++i) {
@@ -187,6 +193,77 @@ TEST(VdbVsGl, AoAndIndirectAgree) {
     // AO RMSE < 1e-3, indirect RMSE < 0.5% of the image's RMS.
     EXPECT_LT(aoRmse, 1e-3);
     EXPECT_LT(giRmse, 0.005 * giRms);
+}
+
+struct Agreement {
+    double aoRmse = 0, giRmse = 0, giRms = 0, giMeanRatio = 0;
+};
+
+Agreement agreement(const Images& im) {
+    double aoSq = 0, giSq = 0, giRef = 0, cpuSum = 0, gpuSum = 0;
+    size_t n = 0;
+    for (size_t i = 0; i < im.valid.size(); ++i) {
+        if (!im.valid[i]) continue;
+        ++n;
+        const double d = double(im.cpuAo[i]) - im.gpuAo[i];
+        aoSq += d * d;
+        const glm::dvec3 g = glm::dvec3(im.cpuGi[i]) - glm::dvec3(im.gpuGi[i]);
+        giSq += glm::dot(g, g) / 3.0;
+        giRef += glm::dot(glm::dvec3(im.gpuGi[i]), glm::dvec3(im.gpuGi[i])) / 3.0;
+        cpuSum += im.cpuGi[i].x + im.cpuGi[i].y + im.cpuGi[i].z;
+        gpuSum += im.gpuGi[i].x + im.gpuGi[i].y + im.gpuGi[i].z;
+    }
+    Agreement a;
+    a.aoRmse = std::sqrt(aoSq / double(n));
+    a.giRmse = std::sqrt(giSq / double(n));
+    a.giRms = std::sqrt(giRef / double(n));
+    a.giMeanRatio = cpuSum / gpuSum;
+    return a;
+}
+
+// The directional levels hold what the GPU's anisoRadiance textures hold, level by level.
+TEST(VdbVsGl, DirectionalLevelsMatchTheGpuTextures) {
+    Fixture f(true, 0);
+    ASSERT_TRUE(f.sparse.anisotropic());
+    for (int d = 0; d < 6; ++d)
+        for (int level = 1; level < std::min(f.grid.levels, 4); ++level) {
+            const glm::ivec3 size = f.sparse.levelSize(level);
+            std::vector<float> gpu(size_t(size.x) * size.y * size.z * 4);
+            glGetTextureImage(f.grid.anisoRadiance[size_t(d)].id(), level - 1, GL_RGBA, GL_FLOAT,
+                              GLsizei(gpu.size() * sizeof(float)), gpu.data());
+            GlContext::shared().checkErrors("vdb_vs_gl: directional readback");
+            auto opAcc = f.sparse.directional[size_t(d)][size_t(level - 1)].opacity->getConstAccessor();
+            auto raAcc = f.sparse.directional[size_t(d)][size_t(level - 1)].radiance->getConstAccessor();
+            double maxAlphaErr = 0, maxRadianceErr = 0;
+            for (int z = 0; z < size.z; ++z)
+                for (int y = 0; y < size.y; ++y)
+                    for (int x = 0; x < size.x; ++x) {
+                        const size_t i = 4 * ((size_t(z) * size.y + y) * size.x + x);
+                        maxAlphaErr = std::max(maxAlphaErr, double(std::abs(opAcc.getValue({x, y, z}) - gpu[i + 3])));
+                        const openvdb::Vec3s L = raAcc.getValue({x, y, z});
+                        for (int c = 0; c < 3; ++c)
+                            maxRadianceErr = std::max(
+                                maxRadianceErr, std::abs(L[c] - gpu[i + c]) / std::max(0.05, double(std::abs(L[c]))));
+                    }
+            SCOPED_TRACE("direction " + std::to_string(d) + " level " + std::to_string(level));
+            EXPECT_LT(maxAlphaErr, 2e-3);     // RGBA16F on the GPU
+            EXPECT_LT(maxRadianceErr, 0.01);  // relative, as the level-0 radiance above
+        }
+}
+
+// On the GPU path's defaults (directional levels, vct.bounces bounces) the images agree as
+// closely as the isotropic base case's do: one cone march, one bounce rule.
+TEST(VdbVsGl, DirectionalLevelsAndBouncesAgree) {
+    for (int bounces : {0, 1}) {
+        Fixture f(true, bounces);
+        const Agreement a = agreement(renderBoth(f, 1.f));
+        std::printf("[vdb_vs_gl] aniso, %d bounce(s): AO RMSE %.2e, indirect RMSE %.2e (image RMS %.4f, rel %.2e), "
+                    "mean ratio sparse / dense %.4f\n",
+                    bounces, a.aoRmse, a.giRmse, a.giRms, a.giRmse / a.giRms, a.giMeanRatio);
+        EXPECT_LT(a.aoRmse, 2e-3) << bounces;
+        EXPECT_LT(a.giRmse, 0.01 * a.giRms) << bounces;
+        EXPECT_NEAR(a.giMeanRatio, 1.0, 0.005) << bounces;
+    }
 }
 
 }  // namespace
