@@ -10,7 +10,7 @@ ASAN_BUILD ?= build-asan
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: deps build render test asan bench scenes results clean
+.PHONY: deps build render test asan bench scenes results convergence clean
 
 deps:
 	@bash scripts/install-deps.sh
@@ -57,6 +57,11 @@ bench: build
 # Regenerates docs/results.md and docs/results/*.svg from sweeps/study.json.
 results: build
 	python3 scripts/make_results.py --vct ./$(BUILD)/vct
+
+# Regenerates the convergence tables of docs/convergence.md (both backends, 32^3..256^3).
+convergence: build
+	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend gl --markdown docs/convergence_gl.md
+	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend vdb --markdown docs/convergence_vdb.md
 
 clean:
 	rm -rf $(BUILD) $(ASAN_BUILD) out
