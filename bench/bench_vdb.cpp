@@ -83,6 +83,7 @@ int main() {
     ConeSettings cs;
     cs.anisotropic = false;
     ParamMap params;
+    params.set("vct.bounces", "0");  // the table's columns: voxelize, inject, levels (direct light)
     for (int res : resolutions()) {
         SparseVoxelScene v = buildSparseVoxels(scene, res, true, 1.f, params);
         const SparseVoxelStats& s = v.stats;
