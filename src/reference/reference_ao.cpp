@@ -1,7 +1,7 @@
 #include "reference/reference_ao.h"
 
 #include "reference/camera_rays.h"
-#include "reference/progress.h"
+#include "util/progress.h"
 #include "reference/sampler.h"
 #include "reference/sampling_math.h"
 #include "core/errors.h"

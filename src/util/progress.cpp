@@ -1,4 +1,4 @@
-#include "reference/progress.h"
+#include "util/progress.h"
 
 #include <unistd.h>
 
