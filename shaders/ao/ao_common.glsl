@@ -77,3 +77,28 @@ vec2 ao_pixelNoise(ivec2 g, uint salt) {
 // Every pass writes through here: AO in [0, maxValue] (1 for a chain's last pass), never NaN.
 float ao_sanitize(float a, float maxValue) { return isnan(a) || isinf(a) ? 1.0 : clamp(a, 0.0, maxValue); }
 float ao_sanitize(float a) { return ao_sanitize(a, 1.0); }
+
+// One slice of the horizon search of GTAO (Jimenez et al. 2016, Algorithm 1, lines 5-15),
+// shared by gtao, vbao and ssil: the slice at angle phi in the image plane, its step vector
+// scaled to the screen radius, and the shading normal projected into the slice's plane
+// (its length weights the slice; angleN is its signed angle from the view vector).
+struct AoSlice {
+    vec2 omega;             // pixels per unit step along the slice
+    float projectedLength;
+    float cosN;
+    float angleN;
+};
+
+AoSlice ao_slice(float phi, float screenRadius, vec3 n, vec3 viewVec) {
+    AoSlice sl;
+    sl.omega = vec2(cos(phi), sin(phi)) * screenRadius;
+    vec3 direction = vec3(cos(phi), sin(phi), 0.0);                        // line 8
+    vec3 orthoDirection = direction - dot(direction, viewVec) * viewVec;   // line 9
+    vec3 axis = normalize(cross(orthoDirection, viewVec));                 // line 10
+    vec3 projectedNormal = n - axis * dot(n, axis);                        // line 11
+    float signN = sign(dot(orthoDirection, projectedNormal));              // line 13
+    sl.projectedLength = length(projectedNormal);
+    sl.cosN = clamp(dot(projectedNormal, viewVec) / max(sl.projectedLength, 1e-30), 0.0, 1.0);  // 14
+    sl.angleN = signN * acos(sl.cosN);                                     // line 15
+    return sl;
+}

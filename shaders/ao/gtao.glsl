@@ -53,15 +53,9 @@ float gtao_evaluate(ivec2 g) {
     float visibility = 0.0;
     for (int slice = 0; slice < slices; ++slice) {
         float phi = (float(slice) + noise.x) / float(slices) * AO_PI;         // lines 5-6
-        vec2 omega = vec2(cos(phi), sin(phi)) * screenRadius;
-        vec3 direction = vec3(cos(phi), sin(phi), 0.0);                        // line 8
-        vec3 orthoDirection = direction - dot(direction, viewVec) * viewVec;   // line 9
-        vec3 axis = normalize(cross(orthoDirection, viewVec));                 // line 10
-        vec3 projectedNormal = n - axis * dot(n, axis);                        // line 11
-        float signN = sign(dot(orthoDirection, projectedNormal));              // line 13
-        float projectedLength = length(projectedNormal);
-        float cosN = clamp(dot(projectedNormal, viewVec) / max(projectedLength, 1e-30), 0.0, 1.0);  // 14
-        float angleN = signN * acos(cosN);                                     // line 15
+        AoSlice sl = ao_slice(phi, screenRadius, n, viewVec);                 // lines 7-15
+        vec2 omega = sl.omega;
+        float projectedLength = sl.projectedLength, cosN = sl.cosN, angleN = sl.angleN;
 
         float lowCos0 = cos(angleN + AO_HALF_PI), lowCos1 = cos(angleN - AO_HALF_PI);
         float horizonCos0 = lowCos0, horizonCos1 = lowCos1;                    // lines 17-18

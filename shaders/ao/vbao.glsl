@@ -48,25 +48,17 @@ float vbao_evaluate(ivec2 g) {
     for (int slice = 0; slice < slices; ++slice) {
         // The slice and its projected normal, as GTAO (Jimenez et al. 2016, Algorithm 1, lines 5-15).
         float phi = (float(slice) + noise.x) / float(slices) * AO_PI;
-        vec2 omega = vec2(cos(phi), sin(phi)) * screenRadius;
-        vec3 direction = vec3(cos(phi), sin(phi), 0.0);
-        vec3 orthoDirection = direction - dot(direction, viewVec) * viewVec;
-        vec3 axis = normalize(cross(orthoDirection, viewVec));
-        vec3 projectedNormal = n - axis * dot(n, axis);
-        float signN = sign(dot(orthoDirection, projectedNormal));
-        float projectedLength = length(projectedNormal);
-        float cosN = clamp(dot(projectedNormal, viewVec) / max(projectedLength, 1e-30), 0.0, 1.0);
-        float angleN = signN * acos(cosN);
+        AoSlice sl = ao_slice(phi, screenRadius, n, viewVec);
 
         uint occluded = 0u;
         for (int step = 0; step < steps; ++step) {
             float stepNoise = fract(noise.y + float(slice + step * steps) * 0.6180339887498948);
             float s = pow((float(step) + stepNoise) / float(steps), vbao.params.z) + minS;
-            ivec2 offset = ivec2(round(s * omega));
-            occluded |= vbao_sampleSectors(g, offset, p, viewVec, angleN, 1.0);
-            occluded |= vbao_sampleSectors(g, -offset, p, viewVec, angleN, -1.0);
+            ivec2 offset = ivec2(round(s * sl.omega));
+            occluded |= vbao_sampleSectors(g, offset, p, viewVec, sl.angleN, 1.0);
+            occluded |= vbao_sampleSectors(g, -offset, p, viewVec, sl.angleN, -1.0);
         }
-        visibility += projectedLength * vbm_visibleMeasure(occluded, angleN);
+        visibility += sl.projectedLength * vbm_visibleMeasure(occluded, sl.angleN);
     }
     return visibility / float(slices);
 }

@@ -64,26 +64,18 @@ vec3 ssil_evaluate(ivec2 g) {
     for (int slice = 0; slice < slices; ++slice) {
         // The slice and its projected normal, as GTAO (Jimenez et al. 2016, Algorithm 1, lines 5-15).
         float phi = (float(slice) + noise.x) / float(slices) * AO_PI;
-        vec2 omega = vec2(cos(phi), sin(phi)) * screenRadius;
-        vec3 direction = vec3(cos(phi), sin(phi), 0.0);
-        vec3 orthoDirection = direction - dot(direction, viewVec) * viewVec;
-        vec3 axis = normalize(cross(orthoDirection, viewVec));
-        vec3 projectedNormal = n - axis * dot(n, axis);
-        float signN = sign(dot(orthoDirection, projectedNormal));
-        float projectedLength = length(projectedNormal);
-        float cosN = clamp(dot(projectedNormal, viewVec) / max(projectedLength, 1e-30), 0.0, 1.0);
-        float angleN = signN * acos(cosN);
+        AoSlice sl = ao_slice(phi, screenRadius, n, viewVec);
 
         uint occluded = 0u;
         vec3 gathered = vec3(0.0);
         for (int step = 0; step < steps; ++step) {  // near to far: the nearest sample claims a sector
             float stepNoise = fract(noise.y + float(slice + step * steps) * 0.6180339887498948);
             float s = pow((float(step) + stepNoise) / float(steps), ssil.params.z) + minS;
-            ivec2 offset = ivec2(round(s * omega));
-            ssil_sample(g, offset, p, viewVec, angleN, 1.0, thickness, occluded, gathered);
-            ssil_sample(g, -offset, p, viewVec, angleN, -1.0, thickness, occluded, gathered);
+            ivec2 offset = ivec2(round(s * sl.omega));
+            ssil_sample(g, offset, p, viewVec, sl.angleN, 1.0, thickness, occluded, gathered);
+            ssil_sample(g, -offset, p, viewVec, sl.angleN, -1.0, thickness, occluded, gathered);
         }
-        radiance += projectedLength * (gathered + ssil.params.w * vbm_visibleMeasure(occluded, angleN));
+        radiance += sl.projectedLength * (gathered + ssil.params.w * vbm_visibleMeasure(occluded, sl.angleN));
     }
     return albedo * radiance / float(slices);
 }
