@@ -1,4 +1,4 @@
-// Sparse conservative voxelization: the CPU twin of shaders/voxelize/voxelize.glsl and
+// Sparse conservative voxelization: the CPU twin of shaders/voxelize/voxelize_pass.glsl and
 // resolve.glsl. Each TBB thread marks the voxels its triangles overlap in its own index grid
 // (Int32Tree: voxel -> slot in its array of fixed-point sums); the union of those topologies
 // is the occupied set, and each occupied voxel adds up the sums of every thread. The sums are

@@ -1,5 +1,5 @@
 // Conservative triangle/voxel overlap, the CPU twin of vox_overlaps in
-// shaders/voxelize/voxelize.glsl: Akenine-Moller's separating-axis test (13 axes) against the
+// shaders/voxelize/voxelize_pass.glsl: Akenine-Moller's separating-axis test (13 axes) against the
 // voxel grown by kVoxBoxGrowth, in float, with the same operations in the same order, so the
 // sparse and the dense voxelizers mark the same voxels.
 #pragma once
@@ -11,7 +11,7 @@
 
 namespace vct {
 
-// Half-size growth of the tested box in voxel units (voxelize.glsl VOX_BOX_GROWTH).
+// Half-size growth of the tested box in voxel units (voxelize_pass.glsl VOX_BOX_GROWTH).
 constexpr float kVoxBoxGrowth = 1.0e-4f;
 
 // `p` are the triangle's corners in voxel units, `faceN` = cross(p1 - p0, p2 - p0).

@@ -6,9 +6,9 @@ namespace vct {
 
 ProgramKey voxelizeProgramKey(bool emissionPass, bool bigPass) {
     ShaderDefines d;
-    if (emissionPass) d.push_back({"EMISSION_PASS", "1"});
     if (bigPass) d.push_back({"BIG_PASS", "1"});
-    return computeProgramKey("voxelize/voxelize.glsl", d);
+    // One source per pass, each declaring only the images it binds.
+    return computeProgramKey(emissionPass ? "voxelize/voxelize_emission.glsl" : "voxelize/voxelize.glsl", d);
 }
 
 ProgramKey resolveProgramKey(bool hasEmission, GLenum emissionFormat) {

@@ -8,7 +8,8 @@
 
 namespace vct {
 
-// voxelize.glsl: the geometry or the emission accumulation, small or big-triangle pass.
+// voxelize.glsl or voxelize_emission.glsl: the geometry or the emission accumulation, small or
+// big-triangle pass.
 ProgramKey voxelizeProgramKey(bool emissionPass, bool bigPass);
 // resolve.glsl: reads the emission accumulators when the scene has emission; writes emission
 // in `emissionFormat` (GL_RGBA16F or GL_RGBA32F).
