@@ -5,7 +5,7 @@
 
 VCT_BEGIN_NAMESPACE
 
-// gl_ssao's timing configuration (BRIEF section 5: 8 directions x 4 steps).
+// gl_ssao's timing configuration (8 directions x 4 steps).
 VCT_CONST int HBAO_DEFAULT_DIRECTIONS = 8;
 VCT_CONST int HBAO_DEFAULT_STEPS = 4;
 // Added to the tangent angle to hide tessellation creases; the tangent here is exact for a

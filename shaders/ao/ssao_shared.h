@@ -11,7 +11,7 @@ VCT_CONST int SSAO_KERNEL_SPHERE = 0;     // Crysis: points in the whole ball
 VCT_CONST int SSAO_KERNEL_HEMISPHERE = 1; // normal-oriented hemisphere
 
 // LearnOpenGL's tutorial: 64 samples, bias 0.025 at radius 0.5 -> 0.05 R here, so the bias
-// scales with the scene (BRIEF section 6: scale 1e-4 .. 1e5).
+// scales with the scene (scenes from 1e-4 to 1e5 units).
 VCT_CONST int SSAO_DEFAULT_SAMPLES = 64;
 VCT_CONST float SSAO_DEFAULT_BIAS = 0.05;  // fraction of R
 

@@ -1,6 +1,6 @@
 // Voxel cone traced ambient occlusion: per pixel, the cone set around the shading normal,
 // each cone limited to distance R; A = 1 - sum_c w_c alpha_c (CONE_AO_LINEAR), which
-// estimates BRIEF section 1's A_R. Sky pixels read 1. Dense grid, or (CONE_CLIPMAP) clipmap.
+// estimates the reference's A_R. Sky pixels read 1. Dense grid, or (CONE_CLIPMAP) clipmap.
 #include "cone/cone_common.glsl"
 #ifdef CONE_CLIPMAP
 #include "cone/clipmap_march.glsl"

@@ -34,7 +34,7 @@ bool cone_surface(ivec2 pix, out vec3 pWorld, out vec3 n, out vec3 ng) {
 }
 
 // The cone set around shading normal n: sum_c w_c * (cone result) integrates the cosine lobe.
-// Cones whose axis is below the geometric plane are closed (BRIEF section 1: directions below
+// Cones whose axis is below the geometric plane are closed (as in the AO definition, directions below
 // the geometric normal count as occluded).
 struct ConeGather {
     vec3 radiance;    // sum_c w_c * (radiance_c + (1 - alpha_c) * sky)

@@ -1,5 +1,5 @@
-// Marching one cone through a voxel volume (Crassin et al. 2011, with the rules of BRIEF
-// section 3), written once for C++ and GLSL: the dense grid (cone_march.glsl), the clipmap
+// Marching one cone through a voxel volume (Crassin et al. 2011, with this project's
+// sampling, compositing and plane-limit rules), written once for C++ and GLSL: the dense grid (cone_march.glsl), the clipmap
 // (clipmap_march.glsl) and the sparse CPU tracer (src/vdb/sparse_cone.cpp) run this text, so
 // the CPU tests exercise the shaders' code. Samples composite front to back with
 // cone_composite.h. Everything works in voxel units of the volume's finest level, so the

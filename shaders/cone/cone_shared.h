@@ -36,7 +36,7 @@ VCT_CONST int CONE_BINDING_VOXEL_LIST = 7;  // cone_bounce.glsl: SSBO of the vox
 VCT_CONST int CONE_BOUNCE_GROUP = 64;       // cone_bounce.glsl: invocations per group over the list
 
 // AO mappings (ConeSettings::aoMapping).
-VCT_CONST int CONE_AO_LINEAR = 0;    // A = 1 - sum_c w_c alpha_c: estimates BRIEF section 1's A_R
+VCT_CONST int CONE_AO_LINEAR = 0;    // A = 1 - sum_c w_c alpha_c: estimates the reference's A_R
 VCT_CONST int CONE_AO_FALLOFF = 1;   // each sample's occlusion weighted by 1 / (1 + lambda t)
 
 // rayMarchVoxels channels.
@@ -85,7 +85,7 @@ struct ConeUniforms {
 
 // Weights of the three directional textures a cone of unit direction d blends: d^2 sums to
 // |d|^2 = 1, so a uniform medium keeps its opacity (abs(d) sums to up to sqrt(3) and
-// over-brightens; BRIEF section 3). Shared so the CPU test checks the shader's function.
+// over-brightens). Shared so the CPU test checks the shader's function.
 CONE_FN vec3 cone_anisoWeights(vec3 d) { return d * d; }
 
 // Blends the three directional samples (premultiplied radiance, alpha) with weights w that

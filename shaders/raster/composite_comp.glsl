@@ -1,6 +1,6 @@
 // beauty = emission + direct + ambient, where ambient is either the GI pass's indirect
 // radiance or sky * albedo * AO. AO multiplies the ambient term only, never direct light
-// (BRIEF section 1). Sky pixels show the sky radiance.
+// (direct light is already shadowed). Sky pixels show the sky radiance.
 #include "raster/raster_shared.h"
 layout(local_size_x = RASTER_GROUP_SIZE, local_size_y = RASTER_GROUP_SIZE) in;
 layout(binding = 0) uniform sampler2D gPosition;

@@ -28,7 +28,7 @@ void main() {
     ng = length(ng) > 0.0 ? normalize(ng) : vec3(0.0, 1.0, 0.0);
     vec3 n = length(vNormal) > 0.0 ? normalize(vNormal) : ng;
     // Every surface is seen from its front: flip both normals toward the eye. Visibility
-    // treats all triangles as two-sided, as the AO definition requires (BRIEF section 1).
+    // treats all triangles as two-sided, as the AO definition requires.
     vec3 toEye = eyeWorld - vWorldPos;
     if (dot(ng, toEye) < 0.0) ng = -ng;
     if (dot(n, ng) < 0.0) n = -n;

@@ -1,5 +1,5 @@
 // Filters shared by every screen-space AO method: the depth- and normal-aware bilateral blur
-// (BRIEF section 2), LearnOpenGL's 4x4 box blur (ssao-crytek, ssao-hemisphere) and the
+// (so occlusion does not bleed across depth and normal edges), LearnOpenGL's 4x4 box blur (ssao-crytek, ssao-hemisphere) and the
 // depth-aware upsample from half resolution.
 #pragma once
 

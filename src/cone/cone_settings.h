@@ -1,12 +1,13 @@
-// Settings of voxel cone tracing (BRIEF section 3), read from `--param vct.*`. Defaults and
+// Settings of voxel cone tracing, read from `--param vct.*`. Defaults and
 // their reasons live in shaders/cone/cone_shared.h (CONE_DEFAULT_*).
 //
 // Keys, defaults, ranges and docs: coneSettings() (vct.cones, vct.aperture, vct.step,
 // vct.offset, vct.max-alpha, vct.aniso, vct.ao-mapping, vct.plane-limit).
 //
 // AO mappings: `linear` A = 1 - sum_c w_c alpha_c, where alpha_c is cone c's opacity
-// accumulated within R; with cosine-lobe weights w_c this estimates A_R of BRIEF section 1
-// (binary visibility, no falloff), so it is the one to score against the reference.
+// accumulated within R; with cosine-lobe weights w_c this estimates A_R, the cosine-weighted
+// fraction of the hemisphere unoccluded within R (binary visibility, no falloff), so it is
+// the one to score against the reference.
 // `falloff` weights each sample's opacity by 1 / (1 + lambda t), lambda = 4 / R (Crassin
 // 2011's smooth AO); it is brighter than A_R by design and not an estimator of it.
 #pragma once

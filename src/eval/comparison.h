@@ -1,7 +1,7 @@
 // One comparison: every method variant rendered on one scene, camera and G-buffer (and
 // one voxelization), scored against the ray-traced reference on valid (non-sky) pixels
 // and, where the scene marks off-screen occluders, inside and outside the derived ROI
-// (BRIEF sections 4 and 5). Used by `vct compare` and, case by case, by `vct sweep`.
+// (error where only a world-space method can be right). Used by `vct compare` and, case by case, by `vct sweep`.
 #pragma once
 
 #include "core/request.h"

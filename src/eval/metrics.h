@@ -1,4 +1,4 @@
-// Error of an estimate against a reference image over valid pixels (BRIEF section 5):
+// Error of an estimate against a reference image over valid (non-sky) pixels:
 // RMSE, MAE, mean signed error, max absolute error, PSNR and SSIM (Wang et al. 2004).
 //
 // Conventions, shared by every function here:

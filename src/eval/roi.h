@@ -1,4 +1,4 @@
-// Region of interest derived from two reference renders (BRIEF section 4): the pixels whose
+// Region of interest derived from two reference renders: the pixels whose
 // reference AO changes, beyond the references' own noise, when an off-screen occluder is added.
 #pragma once
 

@@ -2,7 +2,7 @@
 // Scene's own triangle array (shared, not copied) and whose vertex buffer is a padded copy
 // of Scene::positions (Embree reads vertices with 16-byte loads, so the last vertex needs
 // 4 bytes of slack that a std::vector<glm::vec3> does not promise). Robust scene flag, high
-// build quality, no backface culling: back faces occlude, as BRIEF section 1 asks.
+// build quality, no backface culling: back faces occlude, as the AO definition (every surface two-sided) asks.
 // Alpha-masked materials (glTF alphaMode MASK) are honoured by intersection/occlusion
 // filter functions that test baseColorFactor.a x texture alpha against the cutoff.
 #pragma once

@@ -1,4 +1,4 @@
-// Ray-traced ground truth for ambient occlusion (BRIEF section 1):
+// Ray-traced ground truth for ambient occlusion, the definition every AO method is scored against:
 //
 //   A_R(p) = (1/pi) * integral_hemisphere V_R(p, w) max(0, n.w) dw
 //

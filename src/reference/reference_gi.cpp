@@ -136,7 +136,7 @@ struct PathTracer {
 
         glm::vec3 throughput(1.f);
         for (int bounce = 0; bounce < settings.bounces; ++bounce) {
-            // BRIEF section 1: indirect = Lo - Le - the direct term from (punctual) lights, so
+            // The definition of indirect: Lo - Le - the direct term from (punctual) lights, so
             // light from emissive surfaces is indirect even after one reflection, as in every
             // renderer method (the raster direct pass sees punctual lights only).
             glm::vec3& target = bounce == 0 ? out.direct : out.indirect;

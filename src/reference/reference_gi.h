@@ -1,4 +1,4 @@
-// Ray-traced ground truth for diffuse global illumination (BRIEF section 1, Kajiya 1986):
+// Ray-traced ground truth for diffuse global illumination (the rendering equation, Kajiya 1986):
 //
 //   Lo = Le + (rho / pi) * integral Li(w) max(0, n.w) dw
 //
@@ -19,7 +19,7 @@
 // Outputs, RGB, top row first:
 //   emission  Le of the first surface seen;
 //   direct    light reaching the eye after exactly one reflection from punctual lights;
-//   indirect  Lo - Le - direct (BRIEF section 1): light from emissive surfaces (after one
+//   indirect  Lo - Le - direct: light from emissive surfaces (after one
 //             reflection or more), the sky (seen after >= 1 reflection) and every longer
 //             path. The renderer's direct pass sees punctual lights only, so emitters are
 //             the GI methods' job, and their `indirect` is compared with this one;

@@ -15,7 +15,7 @@
 //   open_plane             a 100 m x 100 m plane, a camera looking down at it, a sun straight down
 //   wall_base              a 40 m floor meeting a 20 m tall wall along z = 0 (wall faces +Z)
 //
-// Off-screen occluders (BRIEF section 4) are nodes named "offscreen_*" that also carry extras
+// Off-screen occluders (what the ROI of a comparison is made from) are nodes named "offscreen_*" that also carry extras
 // {"offscreen_occluder": true}; the loader marks their triangles in Scene::triangleOffscreen.
 // Their cameras are designed for aspect ratios 1 to 16/9.
 #pragma once

@@ -1,7 +1,7 @@
 // Which part of the scene the voxels cover (vct.region) and how (vct.clipmap.levels).
 //
 // AO region fitting: with --ao vct alone, only geometry within R of a visible surface point
-// can change the image (A_R of BRIEF section 1 ignores anything farther). The grid is fitted
+// can change the image (A_R counts occluders within R only). The grid is fitted
 // to the bounds of the G-buffer's visible positions grown by the cones' reach, clipped to the
 // scene bounds, and --voxel-res is spent there. The reach is R plus the radius of a cone's
 // footprint at distance R (R tan(aperture / 2): the cones see that far sideways, and cropping
