@@ -61,6 +61,11 @@ const SettingsTable<AtrousSettings>& atrousSettings() {
     return table;
 }
 
+std::vector<SettingDoc> withAtrousDocs(std::vector<SettingDoc> docs) {
+    for (const SettingDoc& d : atrousSettings().docs()) docs.push_back(d);
+    return docs;
+}
+
 std::vector<ProgramKey> atrousPrograms() {
     return {passKey("atrous_variance.glsl", 1), passKey("atrous_variance.glsl", 3), passKey("atrous.glsl", 1),
             passKey("atrous.glsl", 3)};

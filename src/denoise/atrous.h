@@ -28,6 +28,8 @@ struct AtrousSettings {
 };
 // The atrous.* keys, shared by every method that filters with it.
 const SettingsTable<AtrousSettings>& atrousSettings();
+// A filtering method's own setting docs followed by the filter's.
+std::vector<SettingDoc> withAtrousDocs(std::vector<SettingDoc> docs);
 
 // `channels` 1: `input` holds AO in its red channel (R32F); 3: RGB radiance (RGBA32F).
 // `demodulate` (radiance only): filter input / albedo and multiply the result by the albedo,

@@ -38,11 +38,6 @@ GlTexture uploaded(const Image& image, GLenum format) {
     return t;
 }
 
-std::vector<SettingDoc> withFilterDocs(std::vector<SettingDoc> docs) {
-    for (const SettingDoc& d : atrousSettings().docs()) docs.push_back(d);
-    return docs;
-}
-
 void executeRtao(MethodContext& ctx) {
     if (!ctx.plan.runs(kPassRtao)) return;
     const RtaoDenoisedSettings settings = rtaoDenoisedSettings().read(ctx.request.params);
@@ -118,7 +113,7 @@ const Method& rtaoDenoisedMethod() {
         r.summary = "ray-traced AO at 1-4 spp (Embree), then the edge-avoiding a-trous filter";
         r.passes = {{kPassRtao, "--ao is not rtao-denoised"}, {kPassRtaoFilter, "--ao is not rtao-denoised"}};
         r.aovs = {{{"rtao_noisy", 1, "rtao-denoised: the AO estimate before the filter"}, kRtaoNoisy}};
-        r.settings = [] { return withFilterDocs(rtaoDenoisedSettings().docs()); };
+        r.settings = [] { return withAtrousDocs(rtaoDenoisedSettings().docs()); };
         r.programs = atrousPrograms;
         r.declare = [](const PlanContext&, PassDeclarations& d) {
             d.add({kPassRtao, {kGBuffer}, {kRtaoNoisy}, "low-spp ray-traced AO at the G-buffer's points"});
@@ -138,7 +133,7 @@ const Method& ptDenoisedMethod() {
         r.summary = "path-traced indirect light at 1-4 spp (Embree), then the edge-avoiding a-trous filter";
         r.passes = {{kPassPt, "--gi is not pt-denoised"}, {kPassPtFilter, "--gi is not pt-denoised"}};
         r.aovs = {{{"pt_noisy", 3, "pt-denoised: the indirect light before the filter"}, kPtNoisy}};
-        r.settings = [] { return withFilterDocs(ptDenoisedSettings().docs()); };
+        r.settings = [] { return withAtrousDocs(ptDenoisedSettings().docs()); };
         r.programs = atrousPrograms;
         r.declare = [](const PlanContext&, PassDeclarations& d) {
             d.add({kPassPt, {kGBuffer}, {kPtNoisy}, "low-spp path-traced indirect light"});

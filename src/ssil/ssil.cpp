@@ -83,11 +83,7 @@ const Method& ssilMethod() {
         r.kind = MethodKind::GI;
         r.summary = "screen-space indirect light with visibility bitmasks (Therrien et al. 2023)";
         r.passes = {{kPassSsil, "--gi is not ssil"}, {kPassSsilFilter, "--gi is not ssil"}};
-        r.settings = [] {
-            std::vector<SettingDoc> docs = ssilSettings().docs();
-            for (const SettingDoc& d : atrousSettings().docs()) docs.push_back(d);
-            return docs;
-        };
+        r.settings = [] { return withAtrousDocs(ssilSettings().docs()); };
         r.programs = [] {
             std::vector<ProgramKey> keys = {ssilProgramKey()};
             for (const ProgramKey& k : atrousPrograms()) keys.push_back(k);
