@@ -97,10 +97,13 @@ struct BrowserRun {
 };
 
 // Headless chromium with a fresh profile; stdout and stderr (the console log) kept apart.
+// --run-all-compositor-stages-before-draw: a screenshot waits until every tile is rastered
+// (without it one can catch the page half painted, and two shots of one state differ).
 BrowserRun chromium(const std::string& args, const std::string& name) {
     const std::string dir = freshTempDir("gallery_chromium_" + name);
     const std::string cmd = std::string("timeout 90 ") + kChromium +
                             " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run"
+                            " --run-all-compositor-stages-before-draw"
                             " --disable-background-networking --disable-component-update --disable-sync"
                             " --hide-scrollbars --user-data-dir=" +
                             dir + "/profile --enable-logging=stderr --v=0 " + args + " > " + dir +
