@@ -91,17 +91,6 @@ Image maskAnd(const Image& a, const Image& b, bool negateB) {
     return m;
 }
 
-// The mean of an image's channels, one channel.
-Image channelMean(const Image& img) {
-    Image out(img.width, img.height, 1);
-    for (size_t i = 0; i < out.pixels.size(); ++i) {
-        float sum = 0.f;
-        for (int c = 0; c < img.channels; ++c) sum += img.pixels[i * size_t(img.channels) + size_t(c)];
-        out.pixels[i] = sum / float(img.channels);
-    }
-    return out;
-}
-
 double median(std::vector<double> v) {
     if (v.empty()) return 0.0;
     std::sort(v.begin(), v.end());

@@ -21,4 +21,15 @@ struct Image {
     bool empty() const { return pixels.empty(); }
 };
 
+// One channel: the mean of each pixel's channels, summed in channel order.
+inline Image channelMean(const Image& img) {
+    Image out(img.width, img.height, 1);
+    for (size_t i = 0; i < out.pixels.size(); ++i) {
+        float sum = 0.f;
+        for (int c = 0; c < img.channels; ++c) sum += img.pixels[i * size_t(img.channels) + size_t(c)];
+        out.pixels[i] = sum / float(img.channels);
+    }
+    return out;
+}
+
 }  // namespace vct

@@ -69,12 +69,7 @@ void executeGi(MethodContext& ctx) {
     ctx.outputs.setImage(kDirect, gi.direct);
     ctx.outputs.setImage(kBeauty, gi.beauty);
     // One channel: the mean of the RGB standard errors.
-    Image stderrMean(gi.width, gi.height, 1);
-    for (size_t i = 0; i < size_t(gi.width) * gi.height; ++i) {
-        const float* s = &gi.indirectStderr.pixels[3 * i];
-        stderrMean.pixels[i] = (s[0] + s[1] + s[2]) / 3.f;
-    }
-    ctx.outputs.setImage(kIndirectStderr, std::move(stderrMean));
+    ctx.outputs.setImage(kIndirectStderr, channelMean(gi.indirectStderr));
     ctx.extra["reference_gi"] = {{"spp", gi.sppUsed}, {"mean_stderr", gi.meanStderr}, {"rays", gi.raysTraced},
                                  {"rays_per_second", gi.raysPerSecond}, {"bounces", settings.bounces}};
 }
