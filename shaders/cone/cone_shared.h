@@ -18,7 +18,13 @@ VCT_BEGIN_NAMESPACE
 // voxels (texture cache on a GPU, SIMD lanes on llvmpipe).
 VCT_CONST int CONE_LOCAL_SIZE = 8;
 
-VCT_CONST int CONE_MAX_CONES = 64;
+// Cones per march after splitting into lanes (src/cone/cone_set.h): 512 vec4 = 8 KiB of the
+// uniform block, half of the 16 KiB GL 4.5 guarantees.
+VCT_CONST int CONE_MAX_CONES = 512;
+// vct.lanes = auto: one lane per cone at 32^3, (res / 32)^2 lanes above, so a lane's
+// footprint at R spans the same number of voxels at every resolution (4.6 voxels for a
+// 60-degree cone at R = 4 voxels, i.e. R = 1/8 of a 32^3 grid).
+VCT_CONST int CONE_LANES_BASE_RES = 32;
 // Safety bound on samples per cone (apertures near 1 degree step one half voxel at a time):
 // 1024 half-voxel steps cross a 512^3 grid's diagonal.
 VCT_CONST int CONE_MAX_STEPS = 1024;

@@ -35,14 +35,16 @@ gpu::ConeUniforms coneUniforms(bool gi, const VoxelGrid& grid, float maxDistWorl
                                const ConeSettings& settings) {
     gpu::ConeUniforms u{};
     setGridUniforms(u, grid);
-    const float halfAperture = 0.5f * settings.apertureDeg * float(M_PI) / 180.f;
+    const int maxRes = std::max(grid.resolution.x, std::max(grid.resolution.y, grid.resolution.z));
+    const ConeLanes lanes = coneMarchLanes(settings, maxRes);
+    const float halfAperture = 0.5f * lanes.apertureDeg * float(M_PI) / 180.f;
     const float maxDist = maxDistWorld / grid.voxelSize;
     u.march = glm::vec4(std::tan(halfAperture), settings.stepFactor, settings.offsetVoxels, settings.maxAlpha);
     const float falloff = (!gi && settings.aoMapping == ConeAoMapping::Falloff && maxDist > 0.f)
                               ? gpu::CONE_FALLOFF_LAMBDA_R / maxDist
                               : 0.f;
     u.limits = glm::vec4(maxDist, sky, falloff, settings.planeLimit ? gpu::CONE_PLANE_LIMIT_RATIO : 0.f);
-    const std::vector<glm::vec4> cones = diffuseConeSet(settings.coneCount);
+    const std::vector<glm::vec4>& cones = lanes.cones;
     u.config = glm::ivec4(int(cones.size()), gi ? gpu::CONE_AO_LINEAR : int(settings.aoMapping), 0, 0);
     for (size_t i = 0; i < cones.size(); ++i) u.cones[i] = cones[i];
     return u;

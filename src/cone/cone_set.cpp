@@ -1,7 +1,9 @@
 #include "cone/cone_set.h"
 
 #include "core/errors.h"
+#include "cone/cone_shared.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -41,6 +43,47 @@ std::vector<glm::vec4> diffuseConeSet(int coneCount) {
     if (coneCount == 6) return villegasSix();
     if (coneCount == 16 || coneCount == 32 || coneCount == 64) return vogelDisc(coneCount);
     throw InternalError("diffuseConeSet", std::to_string(coneCount) + " cones (expected 6, 16, 32 or 64)");
+}
+
+ConeLanes coneLanes(const std::vector<glm::vec4>& set, float apertureDeg, int lanes) {
+    if (lanes < 1 || size_t(lanes) * set.size() > size_t(gpu::CONE_MAX_CONES))
+        throw InternalError("coneLanes", std::to_string(lanes) + " lanes x " + std::to_string(set.size()) +
+                                             " cones exceed " + std::to_string(gpu::CONE_MAX_CONES));
+    ConeLanes out;
+    if (lanes == 1) {
+        out.cones = set;
+        out.apertureDeg = apertureDeg;
+        return out;
+    }
+    const double half = 0.5 * double(apertureDeg) * M_PI / 180.0;
+    const double capCos = 1.0 - std::cos(half);  // 1 - cos(alpha): the cap's solid angle / 2 pi
+    // Equal solid angle per lane: 1 - cos(alpha_lane) = (1 - cos(alpha)) / lanes.
+    out.apertureDeg = float(2.0 * std::acos(1.0 - capCos / double(lanes)) * 180.0 / M_PI);
+    const double golden = M_PI * (3.0 - std::sqrt(5.0));
+    for (const glm::vec4& c : set) {
+        const glm::dvec3 axis = glm::normalize(glm::dvec3(c));
+        // Any frame around the axis: the lanes' azimuths are a spiral, not tied to it.
+        const glm::dvec3 helper = std::abs(axis.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+        const glm::dvec3 t = glm::normalize(glm::cross(helper, axis));
+        const glm::dvec3 b = glm::cross(axis, t);
+        for (int i = 0; i < lanes; ++i) {
+            // cos(theta) uniform in [cos(alpha), 1] is uniform in solid angle over the cap;
+            // each lane sits at the centre of its share.
+            const double cosT = 1.0 - capCos * (double(i) + 0.5) / double(lanes);
+            const double sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT));
+            const double phi = golden * double(i);
+            const glm::dvec3 d = cosT * axis + sinT * (std::cos(phi) * t + std::sin(phi) * b);
+            out.cones.push_back(glm::vec4(glm::vec3(glm::normalize(d)), c.w / float(lanes)));
+        }
+    }
+    return out;
+}
+
+int resolveConeLanes(int lanes, int coneCount, int maxResolution) {
+    if (lanes > 0) return lanes;
+    const double ratio = double(maxResolution) / double(gpu::CONE_LANES_BASE_RES);
+    const int maxLanes = std::max(1, gpu::CONE_MAX_CONES / std::max(1, coneCount));
+    return std::clamp(int(std::lround(ratio * ratio)), 1, maxLanes);
 }
 
 }  // namespace vct

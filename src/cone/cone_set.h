@@ -19,4 +19,27 @@ namespace vct {
 //    cosine integral, so refining cones with voxels drives the total error down.
 std::vector<glm::vec4> diffuseConeSet(int coneCount);
 
+// The cones a march traces for a set: each cone of the set (aperture `apertureDeg`) split
+// into `lanes` narrower cones, its lanes, spread uniformly in solid angle over its cap (a
+// Vogel spiral in cos(theta) and azimuth), each with 1 / lanes of its cap's solid angle and
+// 1 / lanes of its weight. One lane is the cone itself.
+//
+// Why: a cone's samples average the voxels over its footprint, which grows with distance in
+// world units whatever the grid's resolution, so with a fixed set the march converges to the
+// prefiltered estimate of that footprint, not to the cone's exact visibility: two occluders
+// in one footprint composite as if independent, a wall beside the cone darkens every sample
+// it touches, a thin sheet's trilinear tent lets light through. Lanes whose footprint at R
+// stays a fixed number of voxels as the grid refines (lanes ~ resolution^2) make each lane
+// resolve what the cone only averaged, so the march approaches the cone's exact visibility.
+struct ConeLanes {
+    std::vector<glm::vec4> cones;  // xyz = direction (tangent frame), w = weight; sum of w = 1
+    float apertureDeg = 0.f;       // each lane's full aperture
+};
+ConeLanes coneLanes(const std::vector<glm::vec4>& set, float apertureDeg, int lanes);
+
+// vct.lanes = 0 (auto): (maxResolution / CONE_LANES_BASE_RES)^2 lanes, rounded, clamped to
+// [1, CONE_MAX_CONES / coneCount]: a lane's footprint at a given distance stays the same
+// number of voxels as the grid refines. Otherwise `lanes` itself.
+int resolveConeLanes(int lanes, int coneCount, int maxResolution);
+
 }  // namespace vct

@@ -1,5 +1,6 @@
 #include "cone/cone_settings.h"
 
+#include "cone/cone_set.h"
 #include "cone/cone_shared.h"
 
 #include <cmath>
@@ -32,6 +33,13 @@ void ConeSettings::validate() const {
             "offsetVoxels " + std::to_string(offsetVoxels) + " outside [0, 8]");
     require(std::isfinite(maxAlpha) && maxAlpha >= 0.5f && maxAlpha <= 1.f,
             "maxAlpha " + std::to_string(maxAlpha) + " outside [0.5, 1]");
+    require(lanes >= 0 && lanes * coneCount <= gpu::CONE_MAX_CONES,
+            "lanes " + std::to_string(lanes) + " x " + std::to_string(coneCount) + " cones outside [0, " +
+                std::to_string(gpu::CONE_MAX_CONES) + "]");
+}
+
+ConeLanes coneMarchLanes(const ConeSettings& s, int maxResolution) {
+    return coneLanes(diffuseConeSet(s.coneCount), s.apertureDeg, resolveConeLanes(s.lanes, s.coneCount, maxResolution));
 }
 
 const SettingsTable<ConeSettings>& coneSettings() {
@@ -62,7 +70,18 @@ const SettingsTable<ConeSettings>& coneSettings() {
                     "(not an estimator of A_R)")
             .flag("vct.plane-limit", &ConeSettings::planeLimit,
                   "limit each sample's footprint to its height above the tangent plane / 1.5 so a surface's own "
-                  "voxels never occlude it");
+                  "voxels never occlude it")
+            .integer("vct.lanes", &ConeSettings::lanes, 0, gpu::CONE_MAX_CONES,
+                     "lanes per cone: each cone marched as this many narrower cones spread over its cap (its weight "
+                     "and solid angle shared); 0 = auto, (voxel res / 32)^2, so a lane's footprint stays the same "
+                     "number of voxels as the grid refines and the march converges to the cone's exact visibility "
+                     "(cost grows with the lanes)")
+            .check([](const ConeSettings& s) {
+                if (s.lanes * s.coneCount > gpu::CONE_MAX_CONES)
+                    throw UsageError("--param vct.lanes=" + std::to_string(s.lanes) + ": " + std::to_string(s.lanes) +
+                                     " x " + std::to_string(s.coneCount) + " cones exceed " +
+                                     std::to_string(gpu::CONE_MAX_CONES));
+            });
     return table;
 }
 

@@ -2,7 +2,7 @@
 // their reasons live in shaders/cone/cone_shared.h (CONE_DEFAULT_*).
 //
 // Keys, defaults, ranges and docs: coneSettings() (vct.cones, vct.aperture, vct.step,
-// vct.offset, vct.max-alpha, vct.aniso, vct.ao-mapping, vct.plane-limit).
+// vct.offset, vct.max-alpha, vct.aniso, vct.ao-mapping, vct.plane-limit, vct.lanes).
 //
 // AO mappings: `linear` A = 1 - sum_c w_c alpha_c, where alpha_c is cone c's opacity
 // accumulated within R; with cosine-lobe weights w_c this estimates A_R, the cosine-weighted
@@ -31,6 +31,7 @@ struct ConeSettings {
     bool anisotropic = true;        // use grid.anisoRadiance when present
     ConeAoMapping aoMapping = ConeAoMapping::Linear;
     bool planeLimit = true;         // limit the footprint by the height above the tangent plane
+    int lanes = 1;                  // lanes per cone (cone/cone_set.h); 0 = auto, (res / 32)^2
 
     // Throws InternalError naming the field if a value is outside its range.
     void validate() const;
@@ -40,6 +41,10 @@ struct ConeSettings {
 float defaultConeAperture(int coneCount);
 
 const SettingsTable<ConeSettings>& coneSettings();
+
+// The cones a march over a grid of `maxResolution` voxels (its longest axis) traces: the set
+// of vct.cones split into vct.lanes lanes (cone/cone_set.h).
+struct ConeLanes coneMarchLanes(const ConeSettings& s, int maxResolution);
 ConeSettings readConeSettings(const ParamMap& params);  // coneSettings().read(params)
 
 std::string toString(ConeAoMapping m);

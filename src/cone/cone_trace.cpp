@@ -14,6 +14,7 @@ using namespace conedetail;
 
 static_assert(sizeof(gpu::ConeUniforms) == 2 * 64 + 6 * 16 + gpu::CONE_MAX_CONES * 16,
               "ConeUniforms must match its std140 layout");
+static_assert(sizeof(gpu::ConeUniforms) <= 16384, "GL 4.5 guarantees uniform blocks of 16 KiB (MAX_UNIFORM_BLOCK_SIZE)");
 
 namespace {
 

@@ -2,6 +2,7 @@
 
 #include "cone/cone_bounce.h"
 #include "cone/cone_programs.h"
+#include "cone/cone_set.h"
 #include "cone/cone_settings.h"
 #include "cone/cone_trace.h"
 #include "gl/context.h"
@@ -12,6 +13,9 @@
 #include "vct/voxel_region.h"
 #include "vct/voxel_volume.h"
 #include "voxelize/voxel_programs.h"
+
+#include <cmath>
+#include <string>
 
 namespace vct {
 
@@ -45,6 +49,18 @@ void declareVoxelPasses(const PlanContext& ctx, PassDeclarations& d) {
     std::vector<ResourceId> mipReads{kVoxels};
     if (radiance) mipReads.push_back(kVoxelRadiance);
     d.add({kPassMips, mipReads, {kVoxelMips}, "filtered levels for wide cones"});
+}
+
+// The cones a cone pass marches, for --explain: the set, and its lanes when there are more
+// than one (the grid's longest axis is --voxel-res, which auto's schedule reads).
+std::string coneExplanation(const RenderRequest& r) {
+    const ConeSettings c = readConeSettings(r.params);
+    std::string s = std::to_string(c.coneCount) + " cones of " + std::to_string(int(std::lround(c.apertureDeg))) + " deg";
+    const int lanes = resolveConeLanes(c.lanes, c.coneCount, r.voxelRes);
+    if (lanes > 1)
+        s += ", each marched as " + std::to_string(lanes) + " lanes" +
+             (c.lanes == 0 ? " (vct.lanes=auto at " + std::to_string(r.voxelRes) + "^3)" : " (vct.lanes)");
+    return s;
 }
 
 void declareVoxelView(const PlanContext& ctx, PassDeclarations& d) {
@@ -148,9 +164,9 @@ Method makeVctMethod(MethodKind kind) {
     m.declare = [kind](const PlanContext& ctx, PassDeclarations& d) {
         declareVoxelPasses(ctx, d);
         if (kind == MethodKind::AO)
-            d.add({kPassConeAo, {kGBuffer, kVoxelMips}, {kAo}, "world-space AO cones"});
+            d.add({kPassConeAo, {kGBuffer, kVoxelMips}, {kAo}, "world-space AO cones: " + coneExplanation(ctx.request)});
         else
-            d.add({kPassConeGi, {kGBuffer, kVoxelMips}, {kGiIndirect}, "diffuse GI cones"});
+            d.add({kPassConeGi, {kGBuffer, kVoxelMips}, {kGiIndirect}, "diffuse GI cones: " + coneExplanation(ctx.request)});
         declareVoxelView(ctx, d);
     };
     m.execute = [kind](MethodContext& ctx) { executeVct(ctx, kind); };

@@ -13,6 +13,9 @@ const SettingsTable<VctSettings>& vctSettings() {
                     {{"auto", "auto"}, {"scene", "scene"}, {"fit", "fit"}},
                     "voxel region: scene = whole scene bounds; fit = visible points grown by R (AO); auto = fit "
                     "for --ao vct without --gi vct, else scene (GI light travels far)")
+            .choice("vct.grid", &VctSettings::grid, {{"fit", "fit"}, {"cube", "cube"}},
+                    "grid shape: fit = each axis as long as the region needs; cube = every axis as long as the "
+                    "longest, the region centred, so every mip level has cubic texels (costs memory on flat regions)")
             .integer("vct.clipmap.levels", &VctSettings::clipmapLevels, 0, 8,
                      "clipmap: nested voxel levels of --voxel-res^3 around the camera, each twice the previous "
                      "extent (0 = one dense grid over the region)")

@@ -13,6 +13,9 @@ struct VctSettings {
     // Which part of the scene the voxels cover: scene, fit (the visible points grown by R),
     // or auto (fit for --ao vct without --gi vct, else scene). See vct/voxel_region.h.
     std::string region = "auto";
+    // The grid's shape over the region: fit (each axis as long as the region needs) or cube
+    // (every axis as long as the longest, the region centred). See vct/voxel_region.h.
+    std::string grid = "fit";
     int clipmapLevels = 0;  // nested levels around the camera (0 = one dense grid)
     int viewLevel = 0;      // mip level the voxel_* AOVs show
 };

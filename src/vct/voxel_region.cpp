@@ -35,6 +35,7 @@ std::string voxelRegionExplanation(const RenderRequest& r) {
         s << "; " << levels << " clipmap levels of " << r.voxelRes << "^3 around the camera (isotropic mips)";
     else
         s << "; one dense grid of " << r.voxelRes << " voxels along its longest axis";
+    if (vctSettings().read(r.params).grid == "cube") s << ", padded to a cube (vct.grid=cube)";
     return s.str();
 }
 
@@ -64,6 +65,15 @@ Bounds3 fitAoRegion(const Bounds3& visible, const Bounds3& scene, float reach, f
     return glm::any(glm::greaterThan(b.min, b.max)) ? scene : b;
 }
 
+Bounds3 cubeAround(const Bounds3& b) {
+    if (b.empty()) return b;
+    const glm::vec3 half(0.5f * b.maxExtent());
+    Bounds3 c;
+    c.min = b.center() - half;
+    c.max = b.center() + half;
+    return c;
+}
+
 nlohmann::json VoxelRegion::toJson() const {
     nlohmann::json j = {{"mode", mode},
                         {"why", why},
@@ -75,8 +85,10 @@ nlohmann::json VoxelRegion::toJson() const {
     return j;
 }
 
-VoxelRegion chooseVoxelRegion(const RenderRequest& r, const Scene& scene, const GBuffer* gbuffer,
-                              float apertureDeg, float offsetVoxels) {
+namespace {
+
+VoxelRegion chooseRegionBounds(const RenderRequest& r, const Scene& scene, const GBuffer* gbuffer,
+                               float apertureDeg, float offsetVoxels) {
     VoxelRegion region;
     region.mode = voxelRegionMode(r);
     region.bounds = scene.bounds;
@@ -103,6 +115,18 @@ VoxelRegion chooseVoxelRegion(const RenderRequest& r, const Scene& scene, const 
         << offsetVoxels + 1.f << " voxels, clipped to the scene";
     if (r.gi == kVctMethodName) why << " (vct.region=fit with GI: light from outside is lost)";
     region.why = why.str();
+    return region;
+}
+
+}  // namespace
+
+VoxelRegion chooseVoxelRegion(const RenderRequest& r, const Scene& scene, const GBuffer* gbuffer,
+                              float apertureDeg, float offsetVoxels) {
+    VoxelRegion region = chooseRegionBounds(r, scene, gbuffer, apertureDeg, offsetVoxels);
+    if (vctSettings().read(r.params).grid == "cube") {
+        region.bounds = cubeAround(region.bounds);
+        region.why += "; padded to a cube around its centre (vct.grid=cube)";
+    }
     return region;
 }
 

@@ -10,7 +10,14 @@
 // GI needs the whole scene (light travels far), so `auto` keeps the scene for --gi vct; an
 // explicit vct.region=fit with GI crops what the cones can gather light from.
 //
-// Keys: vct.region and vct.clipmap.levels (vct/vct_settings.h).
+// Grid shape (vct.grid): `fit` gives each axis the voxels the region needs, so a flat region
+// makes a flat grid (64 x 11 x 64 at 64^3 for a floor under a plate). Mip level l then has
+// floor(n / 2^l) texels along an axis of n voxels: the short axis reaches one texel spanning
+// the whole grid while the long ones still halve, and a coarse sample's footprint is a slab
+// reaching from the floor to an occluder on the grid's top face. `cube` grows the region to a
+// cube around its centre, so every axis has the same count and every level cubic texels.
+//
+// Keys: vct.region, vct.grid and vct.clipmap.levels (vct/vct_settings.h).
 #pragma once
 
 #include "image/image.h"
@@ -33,6 +40,9 @@ std::string voxelRegionExplanation(const RenderRequest& request);
 
 // Bounds of the xyz of pixels whose w > 0 (G-buffer position convention) and finite; empty if none.
 Bounds3 visibleBounds(const Image& position);
+
+// The cube with `b`'s centre whose edge is b's longest extent.
+Bounds3 cubeAround(const Bounds3& b);
 
 // `visible` grown by `reach` (world) + marginVoxels voxels, clipped to `scene`, where the voxel is the
 // one a grid of `voxelRes` along the grown box's longest axis will have (makeGridLayout).

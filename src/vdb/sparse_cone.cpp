@@ -33,6 +33,7 @@ struct MarchParams {
     float offset, maxLod;
     glm::vec3 res;
     std::vector<glm::vec3> levelScale;  // level texel coordinates per voxel unit: size_k / res
+    std::vector<glm::vec4> cones;       // the set's lanes (coneMarchLanes)
 };
 
 // One thread's view of the levels: the volume of gpu::cone_marchVolume.
@@ -187,7 +188,9 @@ Gather gather(LevelSampler& sampler, const SparseVoxelScene& v, const std::vecto
 
 MarchParams marchParams(const SparseVoxelScene& v, const ConeSettings& s) {
     MarchParams mp;
-    mp.march.tanHalfAperture = std::tan(0.5f * s.apertureDeg * float(M_PI) / 180.f);
+    const ConeLanes lanes = coneMarchLanes(s, std::max(v.resolution.x, std::max(v.resolution.y, v.resolution.z)));
+    mp.cones = lanes.cones;
+    mp.march.tanHalfAperture = std::tan(0.5f * lanes.apertureDeg * float(M_PI) / 180.f);
     mp.march.stepFactor = s.stepFactor;
     mp.march.maxAlpha = s.maxAlpha;
     mp.march.planeRatio = s.planeLimit ? gpu::CONE_PLANE_LIMIT_RATIO : 0.f;
@@ -219,7 +222,7 @@ std::vector<float> sparseConeAO(const SparseVoxelScene& voxels, const std::vecto
     const float falloff = (settings.aoMapping == ConeAoMapping::Falloff && maxDist > 0.f)
                               ? gpu::CONE_FALLOFF_LAMBDA_R / maxDist
                               : 0.f;
-    const std::vector<glm::vec4> cones = diffuseConeSet(settings.coneCount);
+    const std::vector<glm::vec4>& cones = mp.cones;
     std::vector<float> ao(points.size(), 1.f);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
         LevelSampler sampler(voxels, mp, false);
@@ -245,7 +248,7 @@ std::vector<glm::vec3> sparseConeGI(const SparseVoxelScene& voxels, const std::v
     const MarchParams mp = marchParams(voxels, settings);
     // GI cones run until they leave the grid: twice the box diagonal bounds every path.
     const float maxDist = 2.f * glm::length(glm::vec3(voxels.resolution));
-    const std::vector<glm::vec4> cones = diffuseConeSet(settings.coneCount);
+    const std::vector<glm::vec4>& cones = mp.cones;
     std::vector<glm::vec3> gi(points.size(), glm::vec3(0.f));
     tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
         LevelSampler sampler(voxels, mp, true);
@@ -270,7 +273,6 @@ void traceSparseBounces(SparseVoxelScene& voxels, float sky, const ConeSettings&
     // The direct term stays fixed; each bounce re-gathers from the previous total.
     const openvdb::Vec3SGrid::Ptr direct = voxels.radiance;
     const openvdb::FloatTree& opacity = voxels.opacity->tree();
-    const std::vector<glm::vec4> cones = diffuseConeSet(settings.coneCount);
     const float maxDist = 2.f * glm::length(glm::vec3(voxels.resolution));
     // Minutes at 1024^3 on a few cores: a bar on a terminal, in leaf nodes of 8^3 voxels.
     ProgressBar progress("vdb bounces", uint64_t(bounces) * uint64_t(direct->tree().leafCount()), true);
@@ -294,7 +296,7 @@ void traceSparseBounces(SparseVoxelScene& voxels, float sky, const ConeSettings&
                     const glm::vec3 nn = glm::normalize(n);
                     const glm::vec3 centre = glm::vec3(ijk.x(), ijk.y(), ijk.z()) + 0.5f;
                     const Gather g =
-                        gatherVoxel(sampler, cones, centre, nn, nn, mp.offset + 0.5f, mp.offset, maxDist, 0.f, sky);
+                        gatherVoxel(sampler, mp.cones, centre, nn, nn, mp.offset + 0.5f, mp.offset, maxDist, 0.f, sky);
                     const openvdb::Vec3s albedo = albedoAcc.getValue(ijk), L = it.getValue();
                     glm::vec3 out;
                     for (int c = 0; c < 3; ++c) out[c] = (L[c] / a + albedo[c] * g.radiance[c]) * a;
