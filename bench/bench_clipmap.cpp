@@ -143,7 +143,7 @@ int main(int argc, char** argv) {
             RenderRequest r = base;
             r.ao = "vct";
             r.voxelRes = v.voxelRes;
-            r.reuseVoxels = false;  // time the whole cost: voxelize + mips + cones
+            r.reuseSceneData = false;  // time the whole cost: voxelize + mips + cones
             for (const auto& [k, val] : v.params) r.params.set(k, val);
             session.render(r);  // warm-up (shader compilation)
             RenderResult out = session.render(r);

@@ -230,10 +230,10 @@ void benchScene(const BenchScene& bs, const Options& opt) {
     GlContext::shared().checkErrors("bench reference");
     const Image mask = surfaceMask(ref.aovs.at("depth"));
 
-    // VCT: every pass anew each run (reuseVoxels = false), one warm-up, median of the runs.
+    // VCT: every pass anew each run (reuseSceneData = false), one warm-up, median of the runs.
     r.ao = "vct";
     r.gi = "vct";
-    r.reuseVoxels = false;
+    r.reuseSceneData = false;
     r.aovs = {"ao", "indirect"};
     r.params = opt.params;
     std::map<std::string, std::vector<double>> passMs;

@@ -115,13 +115,13 @@ def case_section(doc, records, plot_dir_rel):
         lines.append(f"ROI (pixels whose reference indirect light changes when the off-screen surfaces are "
                      f"removed): {roi if roi is not None else 'none (no off-screen surfaces)'} of "
                      f"{records[0].get('pixels')} valid pixels.")
-    lines += ["", "| method | params | time (ms) | rmse | roi_rmse | nonroi_rmse | ssim | Pareto |",
-              "|---|---|---:|---:|---:|---:|---:|:---:|"]
+    lines += ["", "| method | params | time (ms) | frame (ms) | rmse | roi_rmse | nonroi_rmse | ssim | Pareto |",
+              "|---|---|---:|---:|---:|---:|---:|---:|:---:|"]
     for r in sorted(records, key=lambda r: r["time_ms"]):
         front = "●" if r.get("pareto") else ""
         if r.get("pareto_roi"):
             front += " (roi ●)"
-        lines.append(f"| {r['method']} | {params_text(r)} | {fmt(r['time_ms'], 2)} | {fmt(r['rmse'])} | "
+        lines.append(f"| {r['method']} | {params_text(r)} | {fmt(r['time_ms'], 2)} | {fmt(r.get('frame_ms'), 2)} | {fmt(r['rmse'])} | "
                      f"{fmt(r.get('roi_rmse'))} | {fmt(r.get('nonroi_rmse'))} | {fmt(r.get('ssim'), 3)} | {front} |")
     lines.append("")
     return lines

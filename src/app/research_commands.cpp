@@ -117,12 +117,12 @@ int runCompare(const CompareOptions& o) {
     s.progress = progressLine;
     GlContext::shared(parseGlDevice(o.render.glDevice));
     nlohmann::json doc = runComparison(scene, s);
-    std::cout << "label                                   time_ms     rmse   roi_rmse  cone_err  voxel_err\n";
+    std::cout << "label                                   time_ms   frame_ms     rmse   roi_rmse  cone_err  voxel_err\n";
     auto cell = [](const nlohmann::json& j) { return j.is_null() ? std::string("-") : std::to_string(j.get<double>()); };
     for (const auto& r : doc["records"]) {
         char line[320];
-        std::snprintf(line, sizeof line, "%-36s %10.2f %8.4f %10s %9s %10s\n", r["label"].get<std::string>().c_str(),
-                      r["time_ms"].get<double>(), r["rmse"].get<double>(), cell(r["roi_rmse"]).c_str(),
+        std::snprintf(line, sizeof line, "%-36s %10.2f %10.2f %8.4f %10s %9s %10s\n", r["label"].get<std::string>().c_str(),
+                      r["time_ms"].get<double>(), r["frame_ms"].get<double>(), r["rmse"].get<double>(), cell(r["roi_rmse"]).c_str(),
                       cell(r["cone_error_rmse"]).c_str(), cell(r["voxel_error_rmse"]).c_str());
         std::cout << line;
     }
@@ -146,7 +146,7 @@ void registerResearchCommands(CLI::App& app) {
         ->capture_default_str();
     gCompareCmd->add_option("--gi", o.giMethods, "GI methods to score against the path tracer (e.g. vct)");
     gCompareCmd->add_option("--ref-spp", o.refSpp, "reference samples per pixel")->capture_default_str();
-    gCompareCmd->add_option("--runs", o.runs, "timed runs after a warm-up (time_ms is their median)")
+    gCompareCmd->add_option("--runs", o.runs, "timed runs after a warm-up (time_ms, the cold cost, and frame_ms, the next frame's, are their medians)")
         ->capture_default_str();
     addViewOptions(gCompareCmd, o.render);
 

@@ -106,7 +106,7 @@ Clipmap buildClipmap(const GpuScene& gpuScene, const Scene& scene, const Clipmap
     }
     for (int l = 0; l < n; ++l) {
         if (l > 0) {
-            auto scope = timer.scope("nest_l" + std::to_string(l));
+            auto scope = timer.scope("nest_l" + std::to_string(l), true, Reruns::WhenSceneChanges);
             // Level l-1's mip-1 voxel 0 in level l's voxels (origins differ by whole voxels of l).
             const glm::ivec3 offset = (layout.originIndex[size_t(l - 1)] - layout.originIndex[size_t(l)]) / (1 << l);
             nestLevel(cm.levels[size_t(l - 1)], cm.levels[size_t(l)], offset);

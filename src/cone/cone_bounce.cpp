@@ -66,7 +66,7 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
     const GLenum format = textureInternalFormat(grid.radiance.id());
     const float diagonal = glm::length(glm::vec3(res)) * grid.voxelSize;
     PassTimer mipsTimer;  // the mips rebuilt inside the bounce count towards "bounce"
-    auto scope = timer.scope("bounce");
+    auto scope = timer.scope("bounce", true, Reruns::WhenSceneChanges);
     // The direct term stays fixed; each bounce re-gathers from the previous total.
     GlTexture direct = createTexture3D(format, res.x, res.y, res.z);
     GlTexture next = createTexture3D(format, res.x, res.y, res.z);

@@ -31,7 +31,9 @@ struct RenderRequest {
     float sky = 1.f;                         // uniform sky radiance
     ParamMap params;                         // --param KEY=VALUE
     bool prune = true;                       // false: run every applicable pass (for tests)
-    bool reuseVoxels = true;                 // false: voxelize anew (timing a method's whole cost)
+    // false: build the scene's static data anew (voxels, the reference's BVH): times a
+    // method's whole, cold cost (compare's time_ms).
+    bool reuseSceneData = true;
 };
 
 // An output a render can write, with its channel count.

@@ -11,8 +11,8 @@ double nowMs() {
     return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
 }
 
-PassTimer::Scope::Scope(PassTimer& timer, std::string name, bool gl)
-    : mTimer(timer), mName(std::move(name)), mGl(gl) {
+PassTimer::Scope::Scope(PassTimer& timer, std::string name, bool gl, Reruns reruns)
+    : mTimer(timer), mName(std::move(name)), mGl(gl), mReruns(reruns) {
     if (mGl) {
         glFinish();
         if (mTimer.mGpuQueries) {
@@ -26,6 +26,7 @@ PassTimer::Scope::Scope(PassTimer& timer, std::string name, bool gl)
 PassTimer::Scope::~Scope() {
     PassTiming t;
     t.name = mName;
+    t.reruns = mReruns;
     if (mGl) {
         if (mQuery) glEndQuery(GL_TIME_ELAPSED);
         glFinish();
@@ -43,6 +44,13 @@ PassTimer::Scope::~Scope() {
 double PassTimer::totalMs() const {
     double s = 0;
     for (const auto& t : mTimings) s += t.wallMs;
+    return s;
+}
+
+double PassTimer::sceneStaticMs() const {
+    double s = 0;
+    for (const auto& t : mTimings)
+        if (t.reruns == Reruns::WhenSceneChanges) s += t.wallMs;
     return s;
 }
 

@@ -8,10 +8,17 @@
 
 namespace vct {
 
+// When a pass must run again: every frame (it reads the view: the G-buffer, the cones, the
+// reference's rays), or only when the scene or its lights change (voxelization, injection,
+// bounces, mips, shadow maps, the reference's BVH). A render's frame cost is its wall clock
+// less the second kind: what the next frame of the same static scene costs.
+enum class Reruns { EveryFrame, WhenSceneChanges };
+
 struct PassTiming {
     std::string name;
     double wallMs = 0.0;
     std::optional<double> gpuMs;  // empty where the driver's timer queries read 0
+    Reruns reruns = Reruns::EveryFrame;
 };
 
 class PassTimer {
@@ -20,7 +27,7 @@ public:
     // Times `name` from construction to destruction of the returned scope.
     class Scope {
     public:
-        Scope(PassTimer& timer, std::string name, bool gl);
+        Scope(PassTimer& timer, std::string name, bool gl, Reruns reruns);
         ~Scope();
         Scope(const Scope&) = delete;
         Scope& operator=(const Scope&) = delete;
@@ -28,14 +35,18 @@ public:
         PassTimer& mTimer;
         std::string mName;
         bool mGl;
+        Reruns mReruns;
         unsigned mQuery = 0;
         double mStart = 0.0;
     };
     // gl = true: glFinish before reading the clock at both ends (GPU work is synchronous to it).
-    Scope scope(const std::string& name, bool gl = true) { return Scope(*this, name, gl); }
+    Scope scope(const std::string& name, bool gl = true, Reruns reruns = Reruns::EveryFrame) {
+        return Scope(*this, name, gl, reruns);
+    }
     void add(PassTiming t) { mTimings.push_back(std::move(t)); }
     const std::vector<PassTiming>& timings() const { return mTimings; }
     double totalMs() const;
+    double sceneStaticMs() const;  // the passes that rerun only when the scene changes
 
 private:
     bool mGpuQueries;

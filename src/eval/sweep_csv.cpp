@@ -10,7 +10,7 @@ using nlohmann::json;
 std::string mergedCsv(const json& merged) {
     static const std::vector<std::string> columns = {
         "case",  "scene",       "camera", "radius",   "width",     "height",     "kind",   "method",   "label",
-        "params", "time_ms",    "rmse",   "mae",      "bias",      "max_abs",    "psnr",   "ssim",     "roi_rmse",
+        "params", "time_ms",    "frame_ms", "rmse",   "mae",      "bias",      "max_abs",    "psnr",   "ssim",     "roi_rmse",
         "nonroi_rmse", "ref_spp", "ref_stderr", "pareto", "pareto_roi", "gl_renderer"};
     auto quote = [](const std::string& s) {
         if (s.find_first_of(",\"\n") == std::string::npos) return s;

@@ -154,7 +154,7 @@ std::string indexPage(const std::vector<SiteCase>& cases, const std::string& tit
     s << "<section>\n<h2>All results</h2>\n<p class=\"small\">Click a column header to sort.</p>\n"
       << "<table class=\"records sortable\" id=\"all-records\">\n<thead><tr>"
       << "<th data-type=\"text\">case</th><th data-type=\"text\">kind</th><th data-type=\"text\">method</th>"
-      << "<th data-type=\"num\">time (ms)</th><th data-type=\"num\">RMSE</th><th data-type=\"num\">ROI "
+      << "<th data-type=\"num\">time (ms)</th><th data-type=\"num\">frame (ms)</th><th data-type=\"num\">RMSE</th><th data-type=\"num\">ROI "
          "RMSE</th>"
       << "<th data-type=\"num\">non-ROI RMSE</th><th data-type=\"num\">MAE</th><th "
          "data-type=\"num\">bias</th>"
@@ -169,7 +169,7 @@ std::string indexPage(const std::vector<SiteCase>& cases, const std::string& tit
               << escapeHtml(r.value("kind", "ao")) << "</td><td>" << escapeHtml(recordLabel(r, false))
               << "</td>";
             for (const char* key :
-                 {"time_ms", "rmse", "roi_rmse", "nonroi_rmse", "mae", "bias", "psnr", "ssim"}) {
+                 {"time_ms", "frame_ms", "rmse", "roi_rmse", "nonroi_rmse", "mae", "bias", "psnr", "ssim"}) {
                 const double v = jsonNumber(r, key);
                 s << "<td class=\"num\" data-value=\"" << numAttr(v) << "\">" << formatNumber(v) << "</td>";
             }

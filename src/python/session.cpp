@@ -212,7 +212,7 @@ params: {key: value} or ["KEY=VALUE", ...], the --param keys of vct.settings().
 
 Returns a dict: each requested AOV as a float32 NumPy array, top row first, HxW for
 one channel and HxWx3 otherwise, and "stats": what `vct render --stats` writes
-(passes with their times, total_ms, the pass plan, the methods' statistics).
+(passes with their times, total_ms, frame_ms, the pass plan, the methods' statistics).
 Raises ValueError for what the command line rejects with exit code 2 (an unknown
 method, AOV or parameter, a value out of range), with the same message, and
 RuntimeError for GL and internal failures.)doc")
@@ -227,13 +227,14 @@ methods: AO methods (default: every registered one but the reference), each with
     optional parameters in brackets, e.g. "gtao[gtao.preset=low;blur=0]".
 gi: GI methods scored on indirect radiance against the path tracer (default none).
 ref_spp: the reference's samples per pixel. runs: timed runs after one warm-up
-    (time_ms is their median, including the method's own voxelization).
+    (time_ms, the cold cost including the method's own voxelization or BVH, and frame_ms,
+    the same runs less what the next frame of a static scene reuses, are their medians).
 size, camera, radius, seed, voxel_res, backend, sky, params: as for render().
 output_dir: where to write what `vct compare -o` writes (images, results.json,
     results.csv); None writes nothing.
 
 Returns the records, one dict per variant (label, kind, method, params, time_ms,
-passes, rmse, mae, bias, max_abs, psnr, ssim, pixels, roi_rmse, nonroi_rmse, extra);
+frame_ms, passes, rmse, mae, bias, max_abs, psnr, ssim, pixels, roi_rmse, nonroi_rmse, extra);
 a pandas DataFrame of them with dataframe=True; with full=True the whole results
 document (scene, camera, resolution, the reference's spp and standard errors,
 records). The comparison runs on its own renderer session over this session's scene.)doc")

@@ -53,7 +53,7 @@ void bindShadowMaps(const ShadowMaps& s) {
 
 ShadowMaps renderShadowMaps(const GpuScene& gpuScene, const Scene& scene, int size, PassTimer& timer) {
     if (scene.lights.empty()) return emptyShadowMaps();
-    auto scope = timer.scope("shadow");
+    auto scope = timer.scope("shadow", true, Reruns::WhenSceneChanges);
     const GLuint program = cachedProgram(shadowProgramKey());
 
     ShadowMaps s;

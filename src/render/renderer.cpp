@@ -209,6 +209,7 @@ RenderResult RenderSession::render(const RenderRequest& request) {
         else if (!mImpl->paramsRead.count(read)) result.unusedParams.push_back(key);
     }
     result.totalMs = nowMs() - start;
+    result.frameMs = std::max(0.0, result.totalMs - timer.sceneStaticMs());
     result.passes = timer.timings();
     return result;
 }
@@ -218,11 +219,13 @@ nlohmann::json statsJson(const RenderResult& result, const RenderRequest& reques
     const auto& info = GlContext::shared().info();
     j["passes"] = nlohmann::json::array();
     for (const auto& p : result.passes) {
-        nlohmann::json e{{"name", p.name}, {"wall_ms", p.wallMs}};
+        nlohmann::json e{{"name", p.name}, {"wall_ms", p.wallMs},
+                         {"reruns", p.reruns == Reruns::EveryFrame ? "every_frame" : "when_scene_changes"}};
         e["gpu_ms"] = p.gpuMs ? nlohmann::json(*p.gpuMs) : nlohmann::json(nullptr);
         j["passes"].push_back(e);
     }
     j["total_ms"] = result.totalMs;
+    j["frame_ms"] = result.frameMs;
     j["width"] = request.width;
     j["height"] = request.height;
     j["gl_renderer"] = info.renderer;

@@ -24,7 +24,11 @@ struct RenderResult {
     RenderPlan plan;
     std::map<std::string, Image> aovs;  // requested AOVs, linear float, top row first
     std::vector<PassTiming> passes;     // passes that ran in this render (cached ones not repeated)
-    double totalMs = 0.0;               // wall clock of this render
+    double totalMs = 0.0;               // wall clock of this render (the cold cost when nothing was reused)
+    // totalMs less the passes that rerun only when the scene or its lights change (voxels,
+    // injection, bounces, mips, shadow maps, the reference's BVH; core/timing.h): what the
+    // next frame of the same static scene costs.
+    double frameMs = 0.0;
     nlohmann::json extra = nlohmann::json::object();  // method statistics (rays, voxel memory, ...)
     // --param keys nobody read: not in this render, nor with the same value and methods in an
     // earlier render of the session whose cached state (a voxel grid) this one reused.

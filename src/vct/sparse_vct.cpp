@@ -20,8 +20,8 @@ SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache, const 
     options.region = region.bounds;
     options.anisotropic = cone.anisotropic;
     auto& slot = cache.grids[voxelGridKey(r, inject, options.anisotropic) + ";region=" + boundsKey(region.bounds)];
-    if (!slot || !r.reuseVoxels) {
-        auto scope = ctx.timer.scope("voxelize", false);
+    if (!slot || !r.reuseSceneData) {
+        auto scope = ctx.timer.scope("voxelize", false, Reruns::WhenSceneChanges);
         slot = std::make_shared<SparseVoxelScene>(
             buildSparseVoxels(ctx.scene, r.voxelRes, inject, r.sky, r.params, options));
         ctx.runCounts["voxelize"]++;

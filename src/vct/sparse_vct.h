@@ -27,7 +27,7 @@ struct SparseFrame {
 };
 
 // The render's sparse grids and points (built once per render, the grids reused across the
-// session unless request.reuseVoxels is false); fills extra["voxels"].
+// session unless request.reuseSceneData is false); fills extra["voxels"].
 SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache, const ConeSettings& cone);
 
 // The cone pass of `kind` over the sparse grids: AO into kAo, GI into kGiIndirect.

@@ -54,7 +54,7 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
                std::to_string(e.z);
     }
     VoxelVolume v;
-    if (r.reuseVoxels) {
+    if (r.reuseSceneData) {
         if (levels > 0) {
             auto it = cache.clipmaps.find(key);
             if (it != cache.clipmaps.end()) v.clipmap = it->second;
@@ -74,7 +74,7 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
         ctx.runCounts["voxelize"]++;
         if (inject) ctx.runCounts["inject"]++;
         ctx.runCounts["mips"]++;
-        if (r.reuseVoxels) cache.clipmaps[key] = v.clipmap;
+        if (r.reuseSceneData) cache.clipmaps[key] = v.clipmap;
     } else if (levels == 0 && !v.grid) {
         v.grid = std::make_shared<VoxelGrid>(voxelizeScene(ctx.gpu, region.bounds, r.voxelRes, r.params, ctx.timer));
         gl.checkErrors("voxelize");
@@ -89,7 +89,7 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
         buildMips(*v.grid, aniso, ctx.timer);
         gl.checkErrors("mips");
         ctx.runCounts["mips"]++;
-        if (r.reuseVoxels) cache.grids[key] = v.grid;
+        if (r.reuseSceneData) cache.grids[key] = v.grid;
     }
     if (!inject && ctx.plan.runs(kPassConeGi)) {
         if (v.clipmap)

@@ -34,7 +34,7 @@ std::string voxelGridKey(const RenderRequest& request, bool inject, bool aniso);
 // The part of a grid's key that names its world box.
 std::string boundsKey(const Bounds3& bounds);
 
-// Builds (or reuses, unless request.reuseVoxels is false) the volume of this render.
+// Builds (or reuses, unless request.reuseSceneData is false) the volume of this render.
 VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVolumeCache& cache);
 
 }  // namespace vct

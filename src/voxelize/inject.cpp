@@ -64,7 +64,7 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
     const glm::ivec3 res = grid.resolution;
     grid.radiance = createTexture3D(format, res.x, res.y, res.z, grid.levels);
 
-    auto scope = timer.scope(scopeName);
+    auto scope = timer.scope(scopeName, true, Reruns::WhenSceneChanges);
 
     // Direct light and emission.
     bindSceneBuffers(gpuScene);

@@ -112,7 +112,7 @@ void buildMips(VoxelGrid& grid, bool anisotropic, PassTimer& timer, const std::s
     const GLuint iso = isotropicMipProgram(grid);
     AnisoPrograms aniso;
     if (anisotropic) aniso = buildAnisoPrograms(grid);
-    auto scope = timer.scope(scopeName);
+    auto scope = timer.scope(scopeName, true, Reruns::WhenSceneChanges);
     buildIsotropicMips(grid, iso);
     if (anisotropic) buildAnisotropicMips(grid, aniso);
     else {

@@ -109,7 +109,7 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     for (int e = 0; e < (hasEmission ? 2 : 1); ++e)
         for (int big = 0; big < 2; ++big) accumulate[e][big] = cachedProgram(voxelizeProgramKey(e != 0, big != 0));
 
-    auto scope = timer.scope(scopeName);
+    auto scope = timer.scope(scopeName, true, Reruns::WhenSceneChanges);
     const glm::ivec3 res = grid.resolution;
 
     // Accumulators, zeroed; nearest filtering, as integer textures must be for texelFetch.

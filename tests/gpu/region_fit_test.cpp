@@ -66,7 +66,7 @@ struct Scored {
 Scored renderVct(const Scene& scene, RenderRequest r, const Image& reference, const Image& mask,
                  const std::map<std::string, std::string>& params) {
     r.ao = "vct";
-    r.reuseVoxels = false;
+    r.reuseSceneData = false;
     for (const auto& [k, v] : params) r.params.set(k, v);
     RenderSession session(scene);
     RenderResult res = session.render(r);

@@ -1,0 +1,100 @@
+// Cold and per-frame cost (core/timing.h, RenderResult::frameMs): which passes a static
+// scene's next frame reruns. Checked against the renderer's own caching, an independent
+// path: a second render of the same request in the same session reuses the scene's static
+// data, so with the camera moved by a centimetre (a new view: G-buffer, cones and rays run
+// again) every pass the first render ran and the second did not must be one that reruns only
+// when the scene changes, and every pass classed as per-frame must run again.
+#include "eval/comparison.h"
+#include "gl/context.h"
+#include "methods/registry.h"
+#include "render/renderer.h"
+#include "scene/camera.h"
+#include "scene/gltf_loader.h"
+#include "support/run_vct.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+using namespace vct;
+
+namespace {
+
+RenderRequest cornellRequest(const Scene& s) {
+    RenderRequest r;
+    r.width = r.height = 24;
+    r.camera = resolveCamera(s, CameraRequest{}, 1.f);
+    r.voxelRes = 32;
+    r.spp = 4;
+    return r;
+}
+
+std::set<std::string> passNames(const RenderResult& r, bool everyFrameOnly) {
+    std::set<std::string> names;
+    for (const PassTiming& p : r.passes)
+        if (!everyFrameOnly || p.reruns == Reruns::EveryFrame) names.insert(p.name);
+    return names;
+}
+
+}  // namespace
+
+TEST(FrameCost, WhatTheNextFrameReusesIsWhatFrameMsLeavesOut) {
+    const Scene scene = loadScene(vcttest::sourceDir() + "/scenes/cornell_box.gltf");
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"vct", "vct"}, {"reference", "reference"}, {"gtao", "none"}, {"rtao-denoised", "pt-denoised"}};
+    for (const auto& [ao, gi] : cases) {
+        RenderSession session(scene);
+        RenderRequest r = cornellRequest(scene);
+        r.ao = ao;
+        r.gi = gi;
+        r.reuseSceneData = false;
+        const RenderResult cold = session.render(r);
+        r.reuseSceneData = true;
+        r.camera.eye += glm::vec3(0.01f, 0.f, 0.f);
+        const RenderResult warm = session.render(r);
+        GlContext::shared().checkErrors("frame cost");
+        const std::set<std::string> warmPasses = passNames(warm, false);
+        double staticMs = 0.0;
+        std::set<std::string> staticPasses;
+        for (const PassTiming& p : cold.passes) {
+            if (!warmPasses.count(p.name))
+                EXPECT_EQ(p.reruns, Reruns::WhenSceneChanges)
+                    << ao << "/" << gi << ": " << p.name << " was reused by the next frame but counts in frame_ms";
+            if (p.reruns == Reruns::WhenSceneChanges) {
+                staticMs += p.wallMs;
+                staticPasses.insert(p.name);
+            }
+        }
+        for (const std::string& name : passNames(cold, true))
+            EXPECT_TRUE(warmPasses.count(name)) << ao << "/" << gi << ": " << name << " is per-frame but did not rerun";
+        EXPECT_GT(cold.frameMs, 0.0);
+        EXPECT_NEAR(cold.frameMs, cold.totalMs - staticMs, 1e-9);
+        if (ao == "vct" || ao == "reference") EXPECT_GT(staticMs, 0.0) << ao << ": voxels or a BVH were built";
+        if (ao == "gtao")
+            for (const std::string& name : staticPasses)
+                EXPECT_EQ(name, "shadow") << "screen-space AO has no static data but the direct light's shadow map";
+    }
+}
+
+TEST(FrameCost, CompareReportsBothCosts) {
+    const Scene scene = loadScene(vcttest::sourceDir() + "/scenes/cornell_box.gltf");
+    ComparisonSettings cs;
+    cs.base = cornellRequest(scene);
+    cs.base.radius = 0.5f;
+    cs.referenceSpp = 8;
+    cs.timingRuns = 1;
+    cs.variants = parseMethodList("gtao,vct,rtao-denoised", "ao");
+    const nlohmann::json doc = runComparison(scene, cs);
+    for (const auto& rec : doc["records"]) {
+        const double t = rec["time_ms"].get<double>(), f = rec["frame_ms"].get<double>();
+        EXPECT_GT(f, 0.0) << rec["label"];
+        EXPECT_LE(f, t) << rec["label"];
+        if (rec["method"] != "gtao") {
+            // The cold runs build the voxels (vct) or the BVH (rtao-denoised) anew.
+            const auto& passes = rec["passes"];
+            EXPECT_TRUE(passes.contains(rec["method"] == "vct" ? "voxelize" : "bvh")) << rec["label"] << passes.dump();
+            EXPECT_LT(f, t) << rec["label"];
+        }
+    }
+    EXPECT_NE(resultsCsv(doc).find("time_ms,frame_ms"), std::string::npos);
+}
