@@ -13,7 +13,7 @@ packages=(
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libglm-dev
   libopenvdb-dev libboost-iostreams-dev libtinygltf-dev libstb-dev nlohmann-json3-dev
   libopenimageio-dev openimageio-tools libopencv-core-dev python3-imath libembree-dev libtbb-dev libcli11-dev
-  libgtest-dev libbenchmark-dev chromium python3-matplotlib
+  libgtest-dev libbenchmark-dev chromium python3-matplotlib libssl-dev git
   pybind11-dev python3-pytest python3-numpy python3-openimageio
 )
 missing=()

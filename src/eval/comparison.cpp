@@ -1,4 +1,5 @@
 #include "eval/comparison.h"
+#include "eval/provenance.h"
 
 #include "eval/error_map.h"
 #include "eval/image_io.h"
@@ -166,6 +167,7 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
     doc["sky"] = s.base.sky;
     doc["voxel_res"] = s.base.voxelRes;
     doc["seed"] = s.base.seed;
+    doc["provenance"] = runProvenance(scene.path, s.base.seed);
     doc["gl_renderer"] = GlContext::shared().info().renderer;
     doc["cores"] = std::thread::hardware_concurrency();
     doc["timing_runs"] = s.timingRuns;
@@ -321,6 +323,9 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
         nlohmann::json passes = nlohmann::json::object();
         for (const auto& [name, t] : passTimes) passes[name] = median(t);
         rec["passes"] = passes;
+        rec["provenance"] = doc["provenance"];
+        rec["provenance"]["params"] =
+            resolvedParams(isAo ? MethodKind::AO : MethodKind::GI, v.method, req.params);
         ErrorMetrics all = computeErrorMetrics(est, truth, &valid, -1, peak);
         nlohmann::json m = metricsJson(all);
         for (auto it = m.begin(); it != m.end(); ++it) rec[it.key()] = it.value();

@@ -5,6 +5,7 @@
 // again) every pass the first render ran and the second did not must be one that reruns only
 // when the scene changes, and every pass classed as per-frame must run again.
 #include "eval/comparison.h"
+#include "eval/provenance.h"
 #include "gl/context.h"
 #include "methods/registry.h"
 #include "render/renderer.h"
@@ -34,6 +35,12 @@ std::set<std::string> passNames(const RenderResult& r, bool everyFrameOnly) {
     for (const PassTiming& p : r.passes)
         if (!everyFrameOnly || p.reruns == Reruns::EveryFrame) names.insert(p.name);
     return names;
+}
+
+const nlohmann::json& record(const nlohmann::json& doc, const std::string& label) {
+    for (const auto& r : doc["records"])
+        if (r["label"] == label) return r;
+    throw std::runtime_error("no record " + label);
 }
 
 }  // namespace
@@ -76,7 +83,7 @@ TEST(FrameCost, WhatTheNextFrameReusesIsWhatFrameMsLeavesOut) {
     }
 }
 
-TEST(FrameCost, CompareReportsBothCosts) {
+TEST(FrameCost, CompareReportsBothCostsAndProvenance) {
     const Scene scene = loadScene(vcttest::sourceDir() + "/scenes/cornell_box.gltf");
     ComparisonSettings cs;
     cs.base = cornellRequest(scene);
@@ -97,4 +104,15 @@ TEST(FrameCost, CompareReportsBothCosts) {
         }
     }
     EXPECT_NE(resultsCsv(doc).find("time_ms,frame_ms"), std::string::npos);
+    // Provenance: the scene file's hash computed independently of the comparison, the seed,
+    // the commit, and the record's own parameters resolved over the method's defaults.
+    const std::string hash = fileSha256(vcttest::sourceDir() + "/scenes/cornell_box.gltf");
+    for (const auto& rec : doc["records"]) {
+        const auto& p = rec["provenance"];
+        EXPECT_EQ(p["scene_sha256"], hash) << rec["label"];
+        EXPECT_EQ(p["seed"], cs.base.seed);
+        EXPECT_EQ(p["commit"], buildCommit());
+        EXPECT_FALSE(p["params"].empty()) << rec["label"];
+    }
+    EXPECT_EQ(record(doc, "vct")["provenance"]["params"]["vct.cones"], "6");
 }
