@@ -11,6 +11,7 @@
 #include "render/renderer.h"
 #include "scene/camera.h"
 #include "scene/gltf_loader.h"
+#include "support/records.h"
 #include "support/run_vct.h"
 
 #include <gtest/gtest.h>
@@ -18,6 +19,7 @@
 #include <set>
 
 using namespace vct;
+using vcttest::record;
 
 namespace {
 
@@ -35,12 +37,6 @@ std::set<std::string> passNames(const RenderResult& r, bool everyFrameOnly) {
     for (const PassTiming& p : r.passes)
         if (!everyFrameOnly || p.reruns == Reruns::EveryFrame) names.insert(p.name);
     return names;
-}
-
-const nlohmann::json& record(const nlohmann::json& doc, const std::string& label) {
-    for (const auto& r : doc["records"])
-        if (r["label"] == label) return r;
-    throw std::runtime_error("no record " + label);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "render/renderer.h"
 #include "scene/camera.h"
 #include "scene/gltf_loader.h"
+#include "support/records.h"
 #include "support/run_vct.h"
 
 #include <gtest/gtest.h>
@@ -17,6 +18,7 @@
 #include <filesystem>
 
 using namespace vct;
+using vcttest::record;
 
 namespace {
 
@@ -35,12 +37,6 @@ double maxAbsDiff(const Image& a, const Image& b) {
     for (size_t i = 0; i < std::min(a.pixels.size(), b.pixels.size()); ++i)
         m = std::max(m, double(std::abs(a.pixels[i] - b.pixels[i])));
     return m;
-}
-
-const nlohmann::json& record(const nlohmann::json& doc, const std::string& label) {
-    for (const auto& r : doc["records"])
-        if (r["label"] == label) return r;
-    throw std::runtime_error("no record " + label);
 }
 
 }  // namespace
