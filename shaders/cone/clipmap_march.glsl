@@ -42,6 +42,7 @@ float clip_positionLod(vec3 x0) {
 
 // (premultiplied radiance, alpha) of level `level` at its texture coordinate tc, mip `mip`.
 vec4 clip_fetch(int level, vec3 tc, float mip) {
+    cone_fetches += 1.0;
     vec4 s;
     switch (level) {
     case 0: s = textureLod(clip_level0, tc, mip); break;

@@ -39,7 +39,12 @@ bool cone_surface(ivec2 pix, out vec3 pWorld, out vec3 n, out vec3 ng) {
 struct ConeGather {
     vec3 radiance;    // sum_c w_c * (radiance_c + (1 - alpha_c) * sky)
     float occlusion;  // sum_c w_c * alpha_c
+    float samples;    // volume samples of all its cones
 };
+
+// Texture fetches this invocation's volume made (the volume's sample and facing functions
+// count them): with the samples, the cone pass's cost in units a GPU can be reasoned in.
+float cone_fetches = 0.0;
 
 // The gather from voxel-space point p (the surface point, or a voxel centre for bounces);
 // the cones start `offset` voxels along ng, and `h0` is that start's height above the
@@ -52,6 +57,7 @@ ConeGather cone_gatherVoxel(vec3 p, vec3 n, vec3 ng, float offset, float h0, flo
     ConeGather g;
     g.radiance = vec3(0.0);
     g.occlusion = 0.0;
+    g.samples = 0.0;
     for (int c = 0; c < u.config.x; ++c) {
         vec4 cone = u.cones[c];
         vec3 d = normalize(frame * cone.xyz);
@@ -63,6 +69,7 @@ ConeGather cone_gatherVoxel(vec3 p, vec3 n, vec3 ng, float offset, float h0, flo
         ConeResult r = cone_marchVolume(m, origin, d, h0, rise, maxDist, falloff);
         g.radiance += cone.w * (r.radiance + (1.0 - r.alpha) * sky);
         g.occlusion += cone.w * r.alpha;
+        g.samples += r.samples;
     }
     return g;
 }

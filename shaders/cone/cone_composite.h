@@ -15,6 +15,7 @@ VCT_BEGIN_NAMESPACE
 struct ConeResult {
     vec3 radiance;  // premultiplied radiance gathered front to back
     float alpha;    // accumulated opacity; 1 = the cone saw no sky
+    float samples;  // volume samples the march took (a device-independent cost)
 };
 
 // Composites one sample s (premultiplied radiance, alpha) over a step dt through texels of

@@ -12,16 +12,21 @@
 
 layout(local_size_x = CONE_LOCAL_SIZE, local_size_y = CONE_LOCAL_SIZE) in;
 layout(rgba32f, binding = CONE_IMAGE_OUTPUT) uniform writeonly image2D cone_giOut;
+// Per pixel: (volume samples, texture fetches) of its cones; zero for sky.
+layout(std430, binding = CONE_BINDING_COUNTS) writeonly buffer ConeCounts { vec2 cone_counts[]; };
 
 void main() {
     ivec2 pix = ivec2(gl_GlobalInvocationID.xy);
     if (pix.x >= u.image.x || pix.y >= u.image.y) return;
     vec3 p, n, ng;
     vec4 result = vec4(0.0);
+    vec2 counts = vec2(0.0);
     if (cone_surface(pix, p, n, ng)) {
         vec3 albedo = max(texelFetch(gbufAlbedo, pix, 0).rgb, vec3(0.0));
         ConeGather g = cone_gather(p, n, ng, u.limits.x, 0.0, u.limits.y);
         result = vec4(albedo * g.radiance, 1.0);
+        counts = vec2(g.samples, cone_fetches);
     }
+    cone_counts[pix.y * u.image.x + pix.x] = counts;
     imageStore(cone_giOut, pix, result);
 }

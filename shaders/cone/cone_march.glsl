@@ -19,6 +19,7 @@ layout(binding = CONE_UNIT_ANISO + 5) uniform sampler3D cone_anisoNZ;
 #endif
 
 vec4 cone_sampleIso(vec3 tc, float lod) {
+    cone_fetches += 1.0;
 #if CONE_GI
     return textureLod(cone_isoTexture, tc, lod);
 #else
@@ -30,6 +31,7 @@ vec4 cone_sampleIso(vec3 tc, float lod) {
 // Directional level `lod` (= pyramid level lod + 1) as seen by a cone travelling along d.
 vec4 cone_sampleAniso(vec3 tc, vec3 d, float lod) {
     vec3 w = cone_anisoWeights(d);
+    cone_fetches += 3.0;
     vec4 x = d.x >= 0.0 ? textureLod(cone_anisoPX, tc, lod) : textureLod(cone_anisoNX, tc, lod);
     vec4 y = d.y >= 0.0 ? textureLod(cone_anisoPY, tc, lod) : textureLod(cone_anisoNY, tc, lod);
     vec4 z = d.z >= 0.0 ? textureLod(cone_anisoPZ, tc, lod) : textureLod(cone_anisoNZ, tc, lod);
@@ -59,6 +61,7 @@ vec4 cone_sampleGrid(vec3 p, vec3 d, float lod) {
 // directional mips cannot tell: a horizontal emitter is as bright to a cone crossing it at
 // 60 degrees from above as from below.
 float cone_facing(vec3 p, vec3 d, float lod) {
+    cone_fetches += 1.0;
     vec4 n = textureLod(cone_normalTexture, p / u.gridResolution.xyz, lod);
     return vox_facingWeight(n.xyz / max(n.w, 1e-4), d);
 }

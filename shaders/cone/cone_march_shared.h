@@ -88,6 +88,7 @@ CONE_FN ConeResult cone_marchVolume(CONE_VOLUME_PARAM ConeMarch m, vec3 origin, 
     ConeResult r;
     r.radiance = vec3(0.0f);
     r.alpha = 0.0f;
+    r.samples = 0.0f;
     float t = 0.0f;
     for (int i = 0; i < CONE_MAX_STEPS; ++i) {
         if (t >= maxDist || r.alpha >= m.maxAlpha) break;
@@ -100,6 +101,7 @@ CONE_FN ConeResult cone_marchVolume(CONE_VOLUME_PARAM ConeMarch m, vec3 origin, 
         if (CONE_VOLUME_LEAVING(p, d, texel)) break;
 
         vec4 s = CONE_VOLUME_SAMPLE(p, d, lod);
+        r.samples += 1.0f;
         s = vec4(vec3(s) * CONE_VOLUME_FACING(p, d, lod, s), s.a);
         cone_composite(r, s, dt, texel, t + 0.5f * dt, falloff);
         t += dt;

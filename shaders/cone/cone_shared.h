@@ -38,6 +38,7 @@ VCT_CONST int CONE_UNIT_BOUNCE_DIRECT = 19;  // cone_bounce.glsl: emission + dir
 VCT_CONST int CONE_UNIT_BOUNCE_ALBEDO = 20;  // cone_bounce.glsl: grid.albedo
 VCT_CONST int CONE_IMAGE_OUTPUT = 0;    // image unit of the output texture
 VCT_CONST int CONE_UBO_BINDING = 0;
+VCT_CONST int CONE_BINDING_COUNTS = 6;      // cone_ao/gi.glsl: per-pixel (samples, fetches)
 VCT_CONST int CONE_BINDING_VOXEL_LIST = 7;  // cone_bounce.glsl: SSBO of the voxels that gather
 VCT_CONST int CONE_BOUNCE_GROUP = 64;       // cone_bounce.glsl: invocations per group over the list
 

@@ -13,6 +13,7 @@
 #pragma once
 
 #include "cone/cone_settings.h"
+#include "cone/cone_trace.h"
 #include "core/gbuffer.h"
 #include "core/gpu_scene.h"
 #include "core/params.h"
@@ -65,9 +66,9 @@ Clipmap buildClipmap(const GpuScene& gpuScene, const Scene& scene, const Clipmap
 // coneTraceGI (cone/cone_trace.h), isotropic mips whatever settings.anisotropic says.
 // Timer scopes "cone_ao" / "cone_gi".
 GlTexture coneTraceClipmapAO(const Clipmap& clipmap, const GBuffer& gbuffer, const View& view, float radius,
-                             const ConeSettings& settings, PassTimer& timer);
+                             const ConeSettings& settings, PassTimer& timer, ConeCost* cost = nullptr);
 GlTexture coneTraceClipmapGI(const Clipmap& clipmap, const GBuffer& gbuffer, const View& view, float sky,
-                             const ConeSettings& settings, PassTimer& timer);
+                             const ConeSettings& settings, PassTimer& timer, ConeCost* cost = nullptr);
 
 // For --stats: per level extent, voxel size, origin, memory and time; totals.
 nlohmann::json clipmapStats(const Clipmap& clipmap);

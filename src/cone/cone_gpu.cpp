@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <stdexcept>
+#include <vector>
 
 namespace vct::conedetail {
 
@@ -70,16 +71,31 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
     return bound;
 }
 
-GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer) {
+GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, ConeCost* cost) {
     const GLenum format = gi ? GL_RGBA32F : GL_R32F;
     GlTexture out = createTexture2D(format, gbuffer.width, gbuffer.height);
     glBindImageTexture(gpu::CONE_IMAGE_OUTPUT, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+    const size_t pixels = size_t(gbuffer.width) * size_t(gbuffer.height);
+    GlBuffer counts = createBuffer(pixels * 2 * sizeof(float));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_COUNTS, counts.id());
     glUseProgram(program);
     glDispatchCompute(groupCount(gbuffer.width, gpu::CONE_LOCAL_SIZE),
                       groupCount(gbuffer.height, gpu::CONE_LOCAL_SIZE), 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                    GL_TEXTURE_UPDATE_BARRIER_BIT);
+                    GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     glUseProgram(0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_COUNTS, 0);
+    if (cost) {
+        std::vector<float> c(pixels * 2);
+        glGetNamedBufferSubData(counts.id(), 0, GLsizeiptr(c.size() * sizeof(float)), c.data());
+        *cost = ConeCost{};
+        cost->pixels = int(pixels);
+        for (size_t i = 0; i < pixels; ++i) {
+            cost->samples += double(c[2 * i]);
+            cost->fetches += double(c[2 * i + 1]);
+            if (c[2 * i] > 0.f) ++cost->surfacePixels;
+        }
+    }
     return out;
 }
 

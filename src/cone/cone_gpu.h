@@ -4,6 +4,7 @@
 
 #include "cone/cone_settings.h"
 #include "cone/cone_shared.h"
+#include "cone/cone_trace.h"
 #include "gl/handles.h"
 #include "gl/program_cache.h"
 #include "core/gbuffer.h"
@@ -42,7 +43,8 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
 
 // Runs a bound pixel pass: `program` over the G-buffer's pixels in CONE_LOCAL_SIZE tiles,
 // writing a new GL_RGBA32F (GI) or GL_R32F (AO) texture of the G-buffer's size.
-GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer);
+// Also binds the per-pixel counts buffer and, when `cost` is given, sums it there.
+GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, ConeCost* cost);
 
 // Throws InternalError naming `pass` if the grid is not usable.
 void checkGrid(const VoxelGrid& grid, const std::string& pass);

@@ -31,27 +31,27 @@ void checkGBuffer(const GBuffer& g, const View& view, const std::string& pass) {
 
 // One cone pass: AO (R32F) or GI (RGBA32F).
 GlTexture tracePass(ConeMode mode, const VoxelGrid& grid, const GBuffer& gbuffer, float maxDistWorld, float sky,
-                    const ConeSettings& settings) {
+                    const ConeSettings& settings, ConeCost* cost) {
     const bool gi = mode == ConeMode::GI;
     BoundConePass bound = bindConePass(gi, grid, gbuffer, maxDistWorld, sky, settings);
-    return dispatchPixelPass(cachedProgram(conePassProgramKey(gi, bound.aniso)), gi, gbuffer);
+    return dispatchPixelPass(cachedProgram(conePassProgramKey(gi, bound.aniso)), gi, gbuffer, cost);
 }
 
 }  // namespace
 
 GlTexture coneTraceAO(const VoxelGrid& grid, const GBuffer& gbuffer, const View& view, float radius,
-                      const ConeSettings& settings, PassTimer& timer) {
+                      const ConeSettings& settings, PassTimer& timer, ConeCost* cost) {
     checkGrid(grid, "coneTraceAO");
     checkGBuffer(gbuffer, view, "coneTraceAO");
     settings.validate();
     if (!(radius >= 0.f) || !std::isfinite(radius))
         throw InternalError("coneTraceAO", "radius " + std::to_string(radius) + " must be finite and >= 0");
     auto scope = timer.scope("cone_ao");
-    return tracePass(ConeMode::AO, grid, gbuffer, radius, 0.f, settings);
+    return tracePass(ConeMode::AO, grid, gbuffer, radius, 0.f, settings, cost);
 }
 
 GlTexture coneTraceGI(const VoxelGrid& grid, const GBuffer& gbuffer, const View& view, float sky,
-                      const ConeSettings& settings, PassTimer& timer) {
+                      const ConeSettings& settings, PassTimer& timer, ConeCost* cost) {
     checkGrid(grid, "coneTraceGI");
     checkGBuffer(gbuffer, view, "coneTraceGI");
     settings.validate();
@@ -61,7 +61,7 @@ GlTexture coneTraceGI(const VoxelGrid& grid, const GBuffer& gbuffer, const View&
     // GI cones run until they leave the grid: the box diagonal bounds every path inside it.
     float diagonal = glm::length(glm::vec3(grid.resolution)) * grid.voxelSize;
     auto scope = timer.scope("cone_gi");
-    return tracePass(ConeMode::GI, grid, gbuffer, 2.f * diagonal, sky, settings);
+    return tracePass(ConeMode::GI, grid, gbuffer, 2.f * diagonal, sky, settings, cost);
 }
 
 }  // namespace vct

@@ -14,12 +14,23 @@
 
 namespace vct {
 
+// What a cone pass did, in units that carry to another device: the volume samples its cones
+// took (one filtered, possibly directional, lookup each) and the texture fetches those made
+// (three per directional sample, one more below level 1 and, for GI, one for the facing
+// normal; one per isotropic or clipmap sample), summed over the image.
+struct ConeCost {
+    double samples = 0.0;
+    double fetches = 0.0;
+    int pixels = 0;        // the image's
+    int surfacePixels = 0; // those that traced cones (not sky)
+};
+
 // AO in [0, 1] per pixel (GL_R32F, view size; sky pixels 1): cones over the hemisphere of the
 // shading normal, weighted to integrate the cosine lobe, each limited to distance `radius`
 // (world units: the AO radius R, beyond which nothing occludes). Reads grid.opacity (and the alpha of
 // grid.anisoRadiance when settings.anisotropic and the grid has them). Timer scope "cone_ao".
 GlTexture coneTraceAO(const VoxelGrid& grid, const GBuffer& gbuffer, const View& view, float radius,
-                      const ConeSettings& settings, PassTimer& timer);
+                      const ConeSettings& settings, PassTimer& timer, ConeCost* cost = nullptr);
 
 // Outgoing indirect diffuse radiance per pixel (GL_RGBA32F, view size; sky pixels 0):
 // albedo / pi * integral of L_in cos over the hemisphere, where each cone gathers the grid's
@@ -27,7 +38,7 @@ GlTexture coneTraceAO(const VoxelGrid& grid, const GBuffer& gbuffer, const View&
 // leaves unoccluded sees the uniform sky radiance `sky`. Includes sky light; excludes direct
 // light and the pixel's own emission. Requires grid.radiance. Timer scope "cone_gi".
 GlTexture coneTraceGI(const VoxelGrid& grid, const GBuffer& gbuffer, const View& view, float sky,
-                      const ConeSettings& settings, PassTimer& timer);
+                      const ConeSettings& settings, PassTimer& timer, ConeCost* cost = nullptr);
 
 // Ray-marches the grid from the camera through each pixel centre, compositing `what`
 // ("albedo" | "radiance" | "opacity") front to back at mip `level` (albedo: level 0 only).

@@ -351,6 +351,7 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
             rec["voxel_error_bias"] = nullptr;
         }
         rec["extra"] = first.extra;
+        rec["cost"] = deviceIndependentCost(first.extra, s.base.width * s.base.height);
         if (write && s.writeImages) {
             const std::string stem = v.fileStem();
             writeImage(path(stem + ".exr"), est, isAo ? std::vector<std::string>{"ao"} : std::vector<std::string>{"R", "G", "B"});
@@ -370,10 +371,32 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
     return doc;
 }
 
+nlohmann::json deviceIndependentCost(const nlohmann::json& extra, int pixels) {
+    nlohmann::json cost = {{"samples_per_pixel", nullptr}, {"fetches_per_pixel", nullptr},
+                           {"rays_per_pixel", nullptr}, {"voxel_bytes", nullptr}};
+    double rays = 0.0;
+    bool anyRays = false;
+    for (auto it = extra.begin(); it != extra.end(); ++it) {
+        const nlohmann::json& e = it.value();
+        if (!e.is_object()) continue;
+        if (e.contains("samples_per_pixel")) {
+            cost["samples_per_pixel"] = e["samples_per_pixel"];
+            cost["fetches_per_pixel"] = e["fetches_per_pixel"];
+        }
+        if (e.contains("rays") && e["rays"].is_number()) {
+            rays += e["rays"].get<double>();
+            anyRays = true;
+        }
+        if (e.contains("memory_bytes") && e["memory_bytes"].is_number()) cost["voxel_bytes"] = e["memory_bytes"];
+    }
+    if (anyRays && pixels > 0) cost["rays_per_pixel"] = rays / double(pixels);
+    return cost;
+}
+
 std::string resultsCsv(const nlohmann::json& results) {
     std::ostringstream out;
     out << "scene,label,kind,method,params,time_ms,frame_ms,rmse,mae,bias,max_abs,psnr,ssim,roi_rmse,nonroi_rmse,"
-           "cone_error_rmse,voxel_error_rmse\n";
+           "cone_error_rmse,voxel_error_rmse,samples_per_pixel,fetches_per_pixel,rays_per_pixel,voxel_bytes\n";
     auto num = [](const nlohmann::json& j) { return j.is_null() ? std::string() : j.dump(); };
     for (const auto& r : results["records"]) {
         std::string params;
@@ -384,7 +407,11 @@ std::string resultsCsv(const nlohmann::json& results) {
             << num(r["time_ms"]) << ',' << num(r.value("frame_ms", nlohmann::json())) << ',' << num(r["rmse"]) << ',' << num(r["mae"]) << ',' << num(r["bias"]) << ','
             << num(r["max_abs"]) << ',' << num(r["psnr"]) << ',' << num(r["ssim"]) << ',' << num(r["roi_rmse"]) << ','
             << num(r["nonroi_rmse"]) << ',' << num(r.value("cone_error_rmse", nlohmann::json())) << ','
-            << num(r.value("voxel_error_rmse", nlohmann::json())) << '\n';
+            << num(r.value("voxel_error_rmse", nlohmann::json()));
+        const nlohmann::json cost = r.value("cost", nlohmann::json::object());
+        for (const char* k : {"samples_per_pixel", "fetches_per_pixel", "rays_per_pixel", "voxel_bytes"})
+            out << ',' << num(cost.value(k, nlohmann::json()));
+        out << '\n';
     }
     return out.str();
 }

@@ -53,4 +53,9 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& setti
 // The CSV form of a results document's records (one line per record, header first).
 std::string resultsCsv(const nlohmann::json& results);
 
+// A record's device-independent cost from its methods' statistics: cone samples and texture
+// fetches per traced pixel (cone methods), rays per image pixel (ray tracers), bytes of voxel
+// data; null where the method has none.
+nlohmann::json deviceIndependentCost(const nlohmann::json& extra, int pixels);
+
 }  // namespace vct

@@ -11,7 +11,8 @@ std::string mergedCsv(const json& merged) {
     static const std::vector<std::string> columns = {
         "case",  "scene",       "camera", "radius",   "width",     "height",     "kind",   "method",   "label",
         "params", "time_ms",    "frame_ms", "rmse",   "mae",      "bias",      "max_abs",    "psnr",   "ssim",     "roi_rmse",
-        "nonroi_rmse", "ref_spp", "ref_stderr", "pareto", "pareto_roi", "gl_renderer"};
+        "nonroi_rmse", "ref_spp", "ref_stderr", "pareto", "pareto_roi", "samples_per_pixel",
+        "fetches_per_pixel", "rays_per_pixel", "voxel_bytes", "gl_renderer"};
     auto quote = [](const std::string& s) {
         if (s.find_first_of(",\"\n") == std::string::npos) return s;
         std::string q = "\"";
@@ -29,6 +30,9 @@ std::string mergedCsv(const json& merged) {
                 if (r.contains("params"))
                     for (auto it = r["params"].begin(); it != r["params"].end(); ++it)
                         cell += (cell.empty() ? "" : ";") + it.key() + "=" + it.value().get<std::string>();
+            } else if (!r.contains(col) && r.contains("cost") && r["cost"].contains(col)) {
+                // The record's device-independent cost (eval/comparison.h), flattened.
+                if (!r["cost"][col].is_null()) cell = r["cost"][col].dump();
             } else if (r.contains(col) && !r[col].is_null()) {
                 cell = r[col].is_string() ? r[col].get<std::string>() : r[col].dump();
             }

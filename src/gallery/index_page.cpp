@@ -158,7 +158,8 @@ std::string indexPage(const std::vector<SiteCase>& cases, const std::string& tit
          "RMSE</th>"
       << "<th data-type=\"num\">non-ROI RMSE</th><th data-type=\"num\">MAE</th><th "
          "data-type=\"num\">bias</th>"
-      << "<th data-type=\"num\">PSNR (dB)</th><th data-type=\"num\">SSIM</th></tr></thead>\n<tbody>\n";
+      << "<th data-type=\"num\">PSNR (dB)</th><th data-type=\"num\">SSIM</th>"
+      << "<th data-type=\"num\">fetches / px</th><th data-type=\"num\">rays / px</th></tr></thead>\n<tbody>\n";
     for (const auto& c : cases) {
         const auto& records = c.input.results["records"];
         for (size_t i = 0; i < records.size(); ++i) {
@@ -171,6 +172,12 @@ std::string indexPage(const std::vector<SiteCase>& cases, const std::string& tit
             for (const char* key :
                  {"time_ms", "frame_ms", "rmse", "roi_rmse", "nonroi_rmse", "mae", "bias", "psnr", "ssim"}) {
                 const double v = jsonNumber(r, key);
+                s << "<td class=\"num\" data-value=\"" << numAttr(v) << "\">" << formatNumber(v) << "</td>";
+            }
+            // Device-independent cost (eval/comparison.h): what carries to another GPU.
+            const nlohmann::json cost = r.value("cost", nlohmann::json::object());
+            for (const char* key : {"fetches_per_pixel", "rays_per_pixel"}) {
+                const double v = jsonNumber(cost, key);
                 s << "<td class=\"num\" data-value=\"" << numAttr(v) << "\">" << formatNumber(v) << "</td>";
             }
             s << "</tr>\n";

@@ -63,6 +63,18 @@ std::string coneExplanation(const RenderRequest& r) {
     return s;
 }
 
+// The cone pass's device-independent cost for the render's statistics: per surface pixel
+// (those that traced cones) and in all, with the cones marched.
+nlohmann::json coneCostJson(const ConeCost& c, const ConeSettings& s, int voxelRes) {
+    const double n = std::max(1, c.surfacePixels);
+    return {{"samples_per_pixel", c.samples / n},
+            {"fetches_per_pixel", c.fetches / n},
+            {"samples", c.samples},
+            {"fetches", c.fetches},
+            {"surface_pixels", c.surfacePixels},
+            {"cones_marched", s.coneCount * resolveConeLanes(s.lanes, s.coneCount, voxelRes)}};
+}
+
 void declareVoxelView(const PlanContext& ctx, PassDeclarations& d) {
     const RenderRequest& r = ctx.request;
     if (r.backend == "vdb")
@@ -118,16 +130,19 @@ void executeVct(MethodContext& ctx, MethodKind kind) {
     }
     const VoxelVolume& v = frame.volume;
     GlContext& gl = GlContext::shared();
+    ConeCost cost;
     if (kind == MethodKind::AO && ctx.plan.runs(kPassConeAo)) {
-        GlTexture ao = v.clipmap ? coneTraceClipmapAO(*v.clipmap, *ctx.gbuffer, ctx.view, r.radius, cone, ctx.timer)
-                                 : coneTraceAO(*v.grid, *ctx.gbuffer, ctx.view, r.radius, cone, ctx.timer);
+        GlTexture ao = v.clipmap ? coneTraceClipmapAO(*v.clipmap, *ctx.gbuffer, ctx.view, r.radius, cone, ctx.timer, &cost)
+                                 : coneTraceAO(*v.grid, *ctx.gbuffer, ctx.view, r.radius, cone, ctx.timer, &cost);
         gl.checkErrors("cone_ao");
+        ctx.extra["cone_ao"] = coneCostJson(cost, cone, r.voxelRes);
         ctx.outputs.setTexture(kAo, std::move(ao), 1);
     }
     if (kind == MethodKind::GI && ctx.plan.runs(kPassConeGi)) {
-        GlTexture gi = v.clipmap ? coneTraceClipmapGI(*v.clipmap, *ctx.gbuffer, ctx.view, r.sky, cone, ctx.timer)
-                                 : coneTraceGI(*v.grid, *ctx.gbuffer, ctx.view, r.sky, cone, ctx.timer);
+        GlTexture gi = v.clipmap ? coneTraceClipmapGI(*v.clipmap, *ctx.gbuffer, ctx.view, r.sky, cone, ctx.timer, &cost)
+                                 : coneTraceGI(*v.grid, *ctx.gbuffer, ctx.view, r.sky, cone, ctx.timer, &cost);
         gl.checkErrors("cone_gi");
+        ctx.extra["cone_gi"] = coneCostJson(cost, cone, r.voxelRes);
         ctx.outputs.setTexture(kGiIndirect, std::move(gi), 4);
     }
     if (ctx.plan.runs(kPassVoxelView) && !frame.viewsDone) {

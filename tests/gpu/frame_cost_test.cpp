@@ -111,4 +111,41 @@ TEST(FrameCost, CompareReportsBothCostsAndProvenance) {
         EXPECT_FALSE(p["params"].empty()) << rec["label"];
     }
     EXPECT_EQ(record(doc, "vct")["provenance"]["params"]["vct.cones"], "6");
+    // Device-independent costs.
+    EXPECT_GT(record(doc, "rtao-denoised")["cost"]["rays_per_pixel"].get<double>(), 0.0);
+    EXPECT_TRUE(record(doc, "gtao")["cost"]["rays_per_pixel"].is_null());
+    EXPECT_GT(record(doc, "vct")["cost"]["voxel_bytes"].get<double>(), 0.0);
+    EXPECT_NE(resultsCsv(doc).find("samples_per_pixel,fetches_per_pixel,rays_per_pixel,voxel_bytes"), std::string::npos);
+}
+
+TEST(FrameCost, ConeCountersFollowTheShadersFetchRules) {
+    // Per volume sample: three directional fetches, one more (the base level) below level 1,
+    // and for GI one for the facing normal; isotropic levels: one (AO), two (GI). Lanes multiply
+    // the cones and narrow them, so the samples grow at least as fast as the lanes.
+    const Scene scene = loadScene(vcttest::sourceDir() + "/scenes/cornell_box.gltf");
+    RenderSession session(scene);
+    auto counters = [&](const std::string& ao, const std::string& gi, const std::vector<std::string>& params) {
+        RenderRequest r = cornellRequest(scene);
+        r.ao = ao;
+        r.gi = gi;
+        for (const std::string& p : params) r.params.set(p);
+        const RenderResult res = session.render(r);
+        GlContext::shared().checkErrors("cone counters");
+        return res.extra.at(ao == "vct" ? "cone_ao" : "cone_gi");
+    };
+    const auto ratio = [](const nlohmann::json& c) {
+        return c["fetches_per_pixel"].get<double>() / c["samples_per_pixel"].get<double>();
+    };
+    const nlohmann::json ao = counters("vct", "none", {}), gi = counters("none", "vct", {});
+    const nlohmann::json aoIso = counters("vct", "none", {"vct.aniso=0"}), giIso = counters("none", "vct", {"vct.aniso=0"});
+    EXPECT_GE(ao["samples_per_pixel"].get<double>(), 6.0) << "at least one sample per open cone";
+    EXPECT_GE(ratio(ao), 3.0);
+    EXPECT_LE(ratio(ao), 4.0);
+    EXPECT_GE(ratio(gi), 4.0);
+    EXPECT_LE(ratio(gi), 5.0);
+    EXPECT_DOUBLE_EQ(ratio(aoIso), 1.0);
+    EXPECT_DOUBLE_EQ(ratio(giIso), 2.0);
+    const nlohmann::json lanes = counters("vct", "none", {"vct.lanes=4"});
+    EXPECT_EQ(lanes["cones_marched"], 24);
+    EXPECT_GE(lanes["samples_per_pixel"].get<double>(), 4.0 * ao["samples_per_pixel"].get<double>());
 }
