@@ -3,6 +3,7 @@
 // the grid. OpenGL 4.5 compute passes; each runs in its own PassTimer scope.
 #pragma once
 
+#include "cone/cone_cost.h"
 #include "cone/cone_settings.h"
 #include "gl/handles.h"
 #include "core/gbuffer.h"
@@ -13,17 +14,6 @@
 #include <string>
 
 namespace vct {
-
-// What a cone pass did, in units that carry to another device: the volume samples its cones
-// took (one filtered, possibly directional, lookup each) and the texture fetches those made
-// (three per directional sample, one more below level 1 and, for GI, one for the facing
-// normal; one per isotropic or clipmap sample), summed over the image.
-struct ConeCost {
-    double samples = 0.0;
-    double fetches = 0.0;
-    int pixels = 0;        // the image's
-    int surfacePixels = 0; // those that traced cones (not sky)
-};
 
 // AO in [0, 1] per pixel (GL_R32F, view size; sky pixels 1): cones over the hemisphere of the
 // shading normal, weighted to integrate the cosine lobe, each limited to distance `radius`

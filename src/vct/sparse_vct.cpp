@@ -58,12 +58,16 @@ void traceSparse(MethodContext& ctx, MethodKind kind, const SparseFrame& f, cons
     if (kind == MethodKind::AO && ctx.plan.runs(kPassConeAo)) {
         auto scope = ctx.timer.scope("cone_ao", false);
         Image ao(g.width, g.height, 1);
-        ao.pixels = sparseConeAO(*f.voxels, f.points, ctx.request.radius, cone);
+        ConeCost cost;
+        ao.pixels = sparseConeAO(*f.voxels, f.points, ctx.request.radius, cone, &cost);
         ctx.outputs.setImage(kAo, std::move(ao));
+        ctx.extra["cone_ao"] = coneCostJson(cost, cone, ctx.request.voxelRes);
     }
     if (kind == MethodKind::GI && ctx.plan.runs(kPassConeGi)) {
         auto scope = ctx.timer.scope("cone_gi", false);
-        const std::vector<glm::vec3> gi = sparseConeGI(*f.voxels, f.points, ctx.request.sky, cone);
+        ConeCost cost;
+        const std::vector<glm::vec3> gi = sparseConeGI(*f.voxels, f.points, ctx.request.sky, cone, &cost);
+        ctx.extra["cone_gi"] = coneCostJson(cost, cone, ctx.request.voxelRes);
         Image indirect(g.width, g.height, 3);
         for (size_t i = 0; i < gi.size(); ++i)
             for (int c = 0; c < 3; ++c) indirect.pixels[3 * i + c] = gi[i][c];

@@ -1,6 +1,7 @@
 #include "vct/vct_method.h"
 
 #include "cone/cone_bounce.h"
+#include "cone/cone_cost.h"
 #include "cone/cone_programs.h"
 #include "cone/cone_set.h"
 #include "cone/cone_settings.h"
@@ -61,18 +62,6 @@ std::string coneExplanation(const RenderRequest& r) {
         s += ", each marched as " + std::to_string(lanes) + " lanes" +
              (c.lanes == 0 ? " (vct.lanes=auto at " + std::to_string(r.voxelRes) + "^3)" : " (vct.lanes)");
     return s;
-}
-
-// The cone pass's device-independent cost for the render's statistics: per surface pixel
-// (those that traced cones) and in all, with the cones marched.
-nlohmann::json coneCostJson(const ConeCost& c, const ConeSettings& s, int voxelRes) {
-    const double n = std::max(1, c.surfacePixels);
-    return {{"samples_per_pixel", c.samples / n},
-            {"fetches_per_pixel", c.fetches / n},
-            {"samples", c.samples},
-            {"fetches", c.fetches},
-            {"surface_pixels", c.surfacePixels},
-            {"cones_marched", s.coneCount * resolveConeLanes(s.lanes, s.coneCount, voxelRes)}};
 }
 
 void declareVoxelView(const PlanContext& ctx, PassDeclarations& d) {

@@ -45,6 +45,9 @@ struct LevelSampler {
     // The directional levels per direction (+X, -X, +Y, -Y, +Z, -Z); empty when isotropic.
     std::array<std::vector<std::unique_ptr<OpacityAcc>>, 6> dirOpacity;
     std::array<std::vector<std::unique_ptr<RadianceAcc>>, 6> dirRadiance;  // GI only
+    // Texture fetches as the GPU's volume counts them (cone/cone_cost.h): one per textureLod
+    // the shader would make, whatever levels the CPU blends for it.
+    double fetches = 0.0;
 
     LevelSampler(const SparseVoxelScene& v, const MarchParams& params, bool gi) : mp(&params) {
         for (const auto& g : v.opacityLevels) opacity.push_back(std::make_unique<OpacityAcc>(g->tree()));
@@ -117,7 +120,11 @@ struct LevelSampler {
     // levels, cone_sampleGrid: below lod 1 the base level blended into the first directional
     // one, as trilinear filtering blends two mip levels.
     glm::vec4 sample(const glm::vec3& p, const glm::vec3& d, float lod) {
-        if (dirOpacity[0].empty()) return acrossLevels(lod, [&](int level) { return sampleLevel(p, level); });
+        if (dirOpacity[0].empty()) {
+            fetches += 1.0;
+            return acrossLevels(lod, [&](int level) { return sampleLevel(p, level); });
+        }
+        fetches += lod < 1.f ? 4.0 : 3.0;
         glm::vec4 directional = sampleAniso(p, d, lod);
         if (lod < 1.f) directional = glm::mix(sampleLevel(p, 0), directional, std::max(lod, 0.f));
         return directional;
@@ -129,6 +136,7 @@ struct LevelSampler {
     // coverage). AO: 1.
     float facing(const glm::vec3& p, const glm::vec3& d, float lod, const glm::vec4&) {
         if (radiance.empty()) return 1.f;
+        fetches += 1.0;
         const glm::vec4 n = acrossLevels(lod, [&](int level) {
             const openvdb::Vec3R xyz = levelCoord(p, level);
             const openvdb::Vec3s v = openvdb::tools::BoxSampler::sample(*normal[size_t(level)], xyz);
@@ -153,6 +161,7 @@ bool surface(const SparsePoint& pt, glm::vec3& n, glm::vec3& ng) {
 struct Gather {
     glm::vec3 radiance{0.f};
     float occlusion = 0.f;
+    float samples = 0.f;  // volume samples of all its cones
 };
 
 // cone_gatherVoxel from voxel-space p: the cones start `offset` voxels along ng, `h0` is that
@@ -173,6 +182,7 @@ Gather gatherVoxel(LevelSampler& sampler, const std::vector<glm::vec4>& cones, c
         const gpu::ConeResult r = gpu::cone_marchVolume(sampler, sampler.mp->march, origin, d, h0, rise, maxDist, falloff);
         g.radiance += cone.w * (r.radiance + (1.f - r.alpha) * sky);
         g.occlusion += cone.w * r.alpha;
+        g.samples += r.samples;
     }
     return g;
 }
@@ -211,8 +221,20 @@ void checkVoxels(const SparseVoxelScene& v, const char* what) {
 
 }  // namespace
 
+// Sums the per-point counts into `cost` (serially: the sum does not depend on the threads).
+void sumCost(ConeCost* cost, const std::vector<double>& samples, const std::vector<double>& fetches) {
+    if (!cost) return;
+    *cost = ConeCost{};
+    cost->pixels = int(samples.size());
+    for (size_t i = 0; i < samples.size(); ++i) {
+        cost->samples += samples[i];
+        cost->fetches += fetches[i];
+        if (samples[i] > 0.0) ++cost->surfacePixels;
+    }
+}
+
 std::vector<float> sparseConeAO(const SparseVoxelScene& voxels, const std::vector<SparsePoint>& points,
-                                float radius, const ConeSettings& settings) {
+                                float radius, const ConeSettings& settings, ConeCost* cost) {
     checkVoxels(voxels, "sparseConeAO");
     settings.validate();
     if (!(radius >= 0.f) || !std::isfinite(radius))
@@ -224,20 +246,25 @@ std::vector<float> sparseConeAO(const SparseVoxelScene& voxels, const std::vecto
                               : 0.f;
     const std::vector<glm::vec4>& cones = mp.cones;
     std::vector<float> ao(points.size(), 1.f);
+    std::vector<double> samples(points.size(), 0.0), fetches(points.size(), 0.0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
         LevelSampler sampler(voxels, mp, false);
         for (size_t i = r.begin(); i != r.end(); ++i) {
             glm::vec3 n, ng;
             if (!surface(points[i], n, ng)) continue;
+            const double before = sampler.fetches;
             const Gather g = gather(sampler, voxels, cones, points[i].position, n, ng, maxDist, falloff, 0.f);
             ao[i] = std::clamp(1.f - g.occlusion, 0.f, 1.f);
+            samples[i] = g.samples;
+            fetches[i] = sampler.fetches - before;
         }
     });
+    sumCost(cost, samples, fetches);
     return ao;
 }
 
 std::vector<glm::vec3> sparseConeGI(const SparseVoxelScene& voxels, const std::vector<SparsePoint>& points,
-                                    float sky, const ConeSettings& settings) {
+                                    float sky, const ConeSettings& settings, ConeCost* cost) {
     checkVoxels(voxels, "sparseConeGI");
     settings.validate();
     if (!voxels.injected() || voxels.radianceLevels.size() != voxels.opacityLevels.size() ||
@@ -250,15 +277,20 @@ std::vector<glm::vec3> sparseConeGI(const SparseVoxelScene& voxels, const std::v
     const float maxDist = 2.f * glm::length(glm::vec3(voxels.resolution));
     const std::vector<glm::vec4>& cones = mp.cones;
     std::vector<glm::vec3> gi(points.size(), glm::vec3(0.f));
+    std::vector<double> samples(points.size(), 0.0), fetches(points.size(), 0.0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
         LevelSampler sampler(voxels, mp, true);
         for (size_t i = r.begin(); i != r.end(); ++i) {
             glm::vec3 n, ng;
             if (!surface(points[i], n, ng)) continue;
+            const double before = sampler.fetches;
             const Gather g = gather(sampler, voxels, cones, points[i].position, n, ng, maxDist, 0.f, sky);
             gi[i] = glm::max(points[i].albedo, glm::vec3(0.f)) * g.radiance;
+            samples[i] = g.samples;
+            fetches[i] = sampler.fetches - before;
         }
     });
+    sumCost(cost, samples, fetches);
     return gi;
 }
 

@@ -8,6 +8,7 @@
 // the same thing). TBB over points; the result does not depend on the thread count.
 #pragma once
 
+#include "cone/cone_cost.h"
 #include "cone/cone_settings.h"
 #include "vdb/sparse_voxels.h"
 
@@ -28,13 +29,14 @@ struct SparsePoint {
 
 // AO in [0, 1] per point (coneTraceAO): 1 - sum_c w_c alpha_c, cones limited to `radius`
 // (world units, >= 0). Reads the opacity levels.
+// `cost`, when given, gets the samples and fetches counted as the GPU pass counts them.
 std::vector<float> sparseConeAO(const SparseVoxelScene& voxels, const std::vector<SparsePoint>& points,
-                                float radius, const ConeSettings& settings);
+                                float radius, const ConeSettings& settings, ConeCost* cost = nullptr);
 
 // Indirect diffuse radiance per point (coneTraceGI): albedo * sum_c w_c (L_c + (1 - alpha_c) sky),
 // cones run until they leave the grid. Requires injected radiance. Invalid points give 0.
 std::vector<glm::vec3> sparseConeGI(const SparseVoxelScene& voxels, const std::vector<SparsePoint>& points,
-                                    float sky, const ConeSettings& settings);
+                                    float sky, const ConeSettings& settings, ConeCost* cost = nullptr);
 
 // `bounces` further diffuse bounces between the voxels (shaders/cone/cone_bounce.glsl): each
 // occupied level-0 voxel with a normal gathers the previous total around its normal with the

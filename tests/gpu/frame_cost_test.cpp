@@ -145,6 +145,15 @@ TEST(FrameCost, ConeCountersFollowTheShadersFetchRules) {
     EXPECT_LE(ratio(gi), 5.0);
     EXPECT_DOUBLE_EQ(ratio(aoIso), 1.0);
     EXPECT_DOUBLE_EQ(ratio(giIso), 2.0);
+    // The sparse CPU tracer runs the same march over the same levels and counts as the GPU.
+    RenderRequest sparseAo = cornellRequest(scene);
+    sparseAo.ao = "vct";
+    sparseAo.gi = "none";
+    sparseAo.backend = "vdb";
+    const nlohmann::json vdb = session.render(sparseAo).extra.at("cone_ao");
+    EXPECT_NEAR(vdb["samples_per_pixel"].get<double>(), ao["samples_per_pixel"].get<double>(),
+                0.01 * ao["samples_per_pixel"].get<double>());
+    EXPECT_NEAR(ratio(vdb), ratio(ao), 0.01);
     const nlohmann::json lanes = counters("vct", "none", {"vct.lanes=4"});
     EXPECT_EQ(lanes["cones_marched"], 24);
     EXPECT_GE(lanes["samples_per_pixel"].get<double>(), 4.0 * ao["samples_per_pixel"].get<double>());
