@@ -31,7 +31,7 @@ void checkInputs(const Clipmap& cm, const GBuffer& g, const View& view, const st
 }
 
 GlTexture traceClipmap(bool gi, const Clipmap& cm, const GBuffer& gbuffer, float maxDistWorld, float sky,
-                       const ConeSettings& settings, ConeCost* cost) {
+                       const ConeSettings& settings, GlBuffer& counts) {
     const ClipmapLayout& layout = cm.layout;
     const VoxelGrid& base = cm.levels.front();
     gpu::ConeUniforms u = coneUniforms(gi, base, maxDistWorld, sky, settings);
@@ -57,7 +57,7 @@ GlTexture traceClipmap(bool gi, const Clipmap& cm, const GBuffer& gbuffer, float
         const VoxelGrid& g = cm.levels[size_t(l)];
         glBindTextureUnit(GLuint(gpu::CLIPMAP_UNIT_LEVEL0 + l), gi ? g.radiance.id() : g.opacity.id());
     }
-    GlTexture out = dispatchPixelPass(program, gi, gbuffer, cost);
+    GlTexture out = dispatchPixelPass(program, gi, gbuffer, counts);
     for (int l = 0; l < layout.levelCount; ++l) glBindTextureUnit(GLuint(gpu::CLIPMAP_UNIT_LEVEL0 + l), 0);
     return out;
 }
@@ -70,8 +70,9 @@ GlTexture coneTraceClipmapAO(const Clipmap& cm, const GBuffer& gbuffer, const Vi
     settings.validate();
     if (!(radius >= 0.f) || !std::isfinite(radius))
         throw InternalError("coneTraceClipmapAO", "radius " + std::to_string(radius) + " must be finite and >= 0");
-    auto scope = timer.scope("cone_ao");
-    return traceClipmap(false, cm, gbuffer, radius, 0.f, settings, cost);
+    return timedConePass(timer, "cone_ao", gbuffer, cost, [&](GlBuffer& counts) {
+        return traceClipmap(false, cm, gbuffer, radius, 0.f, settings, counts);
+    });
 }
 
 GlTexture coneTraceClipmapGI(const Clipmap& cm, const GBuffer& gbuffer, const View& view, float sky,
@@ -85,8 +86,9 @@ GlTexture coneTraceClipmapGI(const Clipmap& cm, const GBuffer& gbuffer, const Vi
     // As the dense path: twice the coarsest level's diagonal bounds every path inside it.
     const float diagonal = std::sqrt(3.f) * float(cm.layout.resolution) *
                            cm.layout.voxelSize(cm.layout.levelCount - 1);
-    auto scope = timer.scope("cone_gi");
-    return traceClipmap(true, cm, gbuffer, 2.f * diagonal, sky, settings, cost);
+    return timedConePass(timer, "cone_gi", gbuffer, cost, [&](GlBuffer& counts) {
+        return traceClipmap(true, cm, gbuffer, 2.f * diagonal, sky, settings, counts);
+    });
 }
 
 }  // namespace vct

@@ -16,6 +16,14 @@ struct ConeCost {
     double fetches = 0.0;
     int pixels = 0;         // the image's
     int surfacePixels = 0;  // those that traced cones (not sky)
+
+    // One pixel's counts (zero samples: sky, no cones traced).
+    void addPixel(double pixelSamples, double pixelFetches) {
+        ++pixels;
+        samples += pixelSamples;
+        fetches += pixelFetches;
+        if (pixelSamples > 0.0) ++surfacePixels;
+    }
 };
 
 // For a render's statistics: per surface pixel and in all, with the cones marched (the set

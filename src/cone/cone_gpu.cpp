@@ -71,12 +71,12 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
     return bound;
 }
 
-GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, ConeCost* cost) {
+GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlBuffer& counts) {
     const GLenum format = gi ? GL_RGBA32F : GL_R32F;
     GlTexture out = createTexture2D(format, gbuffer.width, gbuffer.height);
     glBindImageTexture(gpu::CONE_IMAGE_OUTPUT, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
     const size_t pixels = size_t(gbuffer.width) * size_t(gbuffer.height);
-    GlBuffer counts = createBuffer(pixels * 2 * sizeof(float));
+    counts = createBuffer(pixels * 2 * sizeof(float));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_COUNTS, counts.id());
     glUseProgram(program);
     glDispatchCompute(groupCount(gbuffer.width, gpu::CONE_LOCAL_SIZE),
@@ -85,16 +85,22 @@ GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, Con
                     GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     glUseProgram(0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_COUNTS, 0);
+    return out;
+}
+
+GlTexture timedConePass(PassTimer& timer, const char* name, const GBuffer& gbuffer, ConeCost* cost,
+                        const std::function<GlTexture(GlBuffer& counts)>& trace) {
+    GlBuffer counts;
+    GlTexture out;
+    {
+        auto scope = timer.scope(name);
+        out = trace(counts);
+    }
     if (cost) {
-        std::vector<float> c(pixels * 2);
+        std::vector<float> c(size_t(gbuffer.width) * size_t(gbuffer.height) * 2);
         glGetNamedBufferSubData(counts.id(), 0, GLsizeiptr(c.size() * sizeof(float)), c.data());
         *cost = ConeCost{};
-        cost->pixels = int(pixels);
-        for (size_t i = 0; i < pixels; ++i) {
-            cost->samples += double(c[2 * i]);
-            cost->fetches += double(c[2 * i + 1]);
-            if (c[2 * i] > 0.f) ++cost->surfacePixels;
-        }
+        for (size_t i = 0; i + 1 < c.size(); i += 2) cost->addPixel(c[i], c[i + 1]);
     }
     return out;
 }

@@ -8,8 +8,10 @@
 #include "gl/handles.h"
 #include "gl/program_cache.h"
 #include "core/gbuffer.h"
+#include "core/timing.h"
 #include "voxelize/voxel_grid.h"
 
+#include <functional>
 #include <string>
 
 namespace vct::conedetail {
@@ -42,9 +44,15 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
                            const ConeSettings& settings);
 
 // Runs a bound pixel pass: `program` over the G-buffer's pixels in CONE_LOCAL_SIZE tiles,
-// writing a new GL_RGBA32F (GI) or GL_R32F (AO) texture of the G-buffer's size.
-// Also binds the per-pixel counts buffer and, when `cost` is given, sums it there.
-GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, ConeCost* cost);
+// writing a new GL_RGBA32F (GI) or GL_R32F (AO) texture of the G-buffer's size, and into a
+// new `counts` buffer each pixel's (samples, fetches).
+GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlBuffer& counts);
+
+// Runs `trace` (a cone pass that dispatches with dispatchPixelPass) in timer scope `name`;
+// then, outside the timed span, sums its counts into `cost` when given: the readback is for
+// the statistics, not part of the pass's cost.
+GlTexture timedConePass(PassTimer& timer, const char* name, const GBuffer& gbuffer, ConeCost* cost,
+                        const std::function<GlTexture(GlBuffer& counts)>& trace);
 
 // Throws InternalError naming `pass` if the grid is not usable.
 void checkGrid(const VoxelGrid& grid, const std::string& pass);

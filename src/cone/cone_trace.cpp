@@ -31,10 +31,10 @@ void checkGBuffer(const GBuffer& g, const View& view, const std::string& pass) {
 
 // One cone pass: AO (R32F) or GI (RGBA32F).
 GlTexture tracePass(ConeMode mode, const VoxelGrid& grid, const GBuffer& gbuffer, float maxDistWorld, float sky,
-                    const ConeSettings& settings, ConeCost* cost) {
+                    const ConeSettings& settings, GlBuffer& counts) {
     const bool gi = mode == ConeMode::GI;
     BoundConePass bound = bindConePass(gi, grid, gbuffer, maxDistWorld, sky, settings);
-    return dispatchPixelPass(cachedProgram(conePassProgramKey(gi, bound.aniso)), gi, gbuffer, cost);
+    return dispatchPixelPass(cachedProgram(conePassProgramKey(gi, bound.aniso)), gi, gbuffer, counts);
 }
 
 }  // namespace
@@ -46,8 +46,9 @@ GlTexture coneTraceAO(const VoxelGrid& grid, const GBuffer& gbuffer, const View&
     settings.validate();
     if (!(radius >= 0.f) || !std::isfinite(radius))
         throw InternalError("coneTraceAO", "radius " + std::to_string(radius) + " must be finite and >= 0");
-    auto scope = timer.scope("cone_ao");
-    return tracePass(ConeMode::AO, grid, gbuffer, radius, 0.f, settings, cost);
+    return timedConePass(timer, "cone_ao", gbuffer, cost, [&](GlBuffer& counts) {
+        return tracePass(ConeMode::AO, grid, gbuffer, radius, 0.f, settings, counts);
+    });
 }
 
 GlTexture coneTraceGI(const VoxelGrid& grid, const GBuffer& gbuffer, const View& view, float sky,
@@ -60,8 +61,9 @@ GlTexture coneTraceGI(const VoxelGrid& grid, const GBuffer& gbuffer, const View&
         throw InternalError("coneTraceGI", "sky radiance " + std::to_string(sky) + " must be finite and >= 0");
     // GI cones run until they leave the grid: the box diagonal bounds every path inside it.
     float diagonal = glm::length(glm::vec3(grid.resolution)) * grid.voxelSize;
-    auto scope = timer.scope("cone_gi");
-    return tracePass(ConeMode::GI, grid, gbuffer, 2.f * diagonal, sky, settings, cost);
+    return timedConePass(timer, "cone_gi", gbuffer, cost, [&](GlBuffer& counts) {
+        return tracePass(ConeMode::GI, grid, gbuffer, 2.f * diagonal, sky, settings, counts);
+    });
 }
 
 }  // namespace vct

@@ -297,7 +297,7 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
         std::map<std::string, std::vector<double>> passTimes;
         for (int run = 0; run < s.timingRuns; ++run) {
             RenderRequest timed = req;
-            timed.reuseSceneData = false;  // the method's own voxelization counts in its time
+            timed.reuseSceneData = false;  // its own voxels or BVH count in its cold time
             RenderResult r = session.render(timed);
             totals.push_back(r.totalMs);
             frames.push_back(r.frameMs);

@@ -225,12 +225,7 @@ void checkVoxels(const SparseVoxelScene& v, const char* what) {
 void sumCost(ConeCost* cost, const std::vector<double>& samples, const std::vector<double>& fetches) {
     if (!cost) return;
     *cost = ConeCost{};
-    cost->pixels = int(samples.size());
-    for (size_t i = 0; i < samples.size(); ++i) {
-        cost->samples += samples[i];
-        cost->fetches += fetches[i];
-        if (samples[i] > 0.0) ++cost->surfacePixels;
-    }
+    for (size_t i = 0; i < samples.size(); ++i) cost->addPixel(samples[i], fetches[i]);
 }
 
 std::vector<float> sparseConeAO(const SparseVoxelScene& voxels, const std::vector<SparsePoint>& points,
