@@ -5,6 +5,7 @@
 #include "app/commands.h"
 #include "app/exit_codes.h"
 #include "app/render_options.h"
+#include "core/errors.h"
 #include "methods/registry.h"
 
 #include <CLI/CLI.hpp>
@@ -63,6 +64,13 @@ int main(int argc, char** argv) {
     render->add_flag("--no-prune", ro.noPrune, "run every applicable pass even if nothing reads its output");
     render->add_option("--gl-device", ro.glDevice, "auto, surfaceless (Mesa, no GPU) or device (EGL device)")
         ->capture_default_str();
+    render->add_option("--path", ro.path,
+                       "camera path: a JSON file of keyframes (docs/sequences.md) or gltf:NAME|INDEX, a camera "
+                       "animation of the scene; with --frames");
+    render->add_option("--frames", ro.frames, "frames along --path: writes NAME_0000.ext ... beside -o");
+    render->add_option("--frame-seeds", ro.frameSeeds,
+                       "per-frame (each frame its own seed) or fixed (every frame --seed)")
+        ->capture_default_str();
     render->add_flag("--help-params", helpParams, "list every --param key with its default and range");
 
     std::string infoScene, infoDevice = "auto";
@@ -86,7 +94,10 @@ int main(int argc, char** argv) {
         return code == 0 ? 0 : 2;
     }
     try {
-        if (*render) return runRender(ro);
+        if (*render) {
+            if (ro.path.empty() != (ro.frames == 0)) throw UsageError("--path and --frames go together");
+            return ro.path.empty() ? runRender(ro) : runRenderSequence(ro);
+        }
         if (*info) return runInfo(infoScene, infoDevice);
         return runResearchCommand(app);
     } catch (const std::exception& e) {

@@ -7,6 +7,7 @@
 #include "methods/registry.h"
 #include "render/render_spec.h"
 #include "render/renderer.h"
+#include "scene/gltf_animation.h"
 #include "scene/gltf_loader.h"
 #include "util/atomic_file.h"
 
@@ -170,7 +171,8 @@ int runInfo(const std::string& scenePath, const std::string& glDevice) {
               << "\noff-screen occluders: " << (f.hasOffscreenOccluders ? "yes" : "no") << "\nbounds: ("
               << scene.bounds.min.x << ", " << scene.bounds.min.y << ", " << scene.bounds.min.z << ") .. ("
               << scene.bounds.max.x << ", " << scene.bounds.max.y << ", " << scene.bounds.max.z << ")\n"
-              << "cameras: " << describeCameras(scene) << "\n";
+              << "cameras: " << describeCameras(scene) << "\n"
+              << "camera animations: " << describeCameraAnimations(scene) << "\n";
     for (const auto& l : scene.lights)
         std::cout << "light '" << l.name << "': " << (l.type == LightType::Directional ? "directional" :
                                                       l.type == LightType::Point ? "point" : "spot")

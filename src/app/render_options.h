@@ -34,6 +34,11 @@ struct RenderOptions {
     bool explain = false;
     bool noPrune = false;
     std::string glDevice = "auto";
+    // A sequence (app/render_sequence.cpp): a camera path file, or gltf:NAME|INDEX for one of
+    // the scene's camera animations, sampled at `frames` evenly spaced times.
+    std::string path;
+    int frames = 0;                        // 0: a still image
+    std::string frameSeeds = "per-frame";  // per-frame: frame f uses frameSeed(seed, f); fixed: seed
 };
 
 // Parses the option strings into a RenderSpec and checks it with the renderer's
@@ -49,6 +54,10 @@ void writeRenderOutput(const std::string& path, const std::map<std::string, Imag
                        const std::vector<std::string>& order, float exposure);
 
 int runRender(const RenderOptions& o);
+// `vct render --path P --frames N`: numbered frames beside -o (NAME_0000.png, ...), each written
+// atomically; frames already there from the same sequence (NAME.sequence.json says which) are
+// kept, so a killed run resumes; a video NAME.mp4 when ffmpeg is installed (PNG frames).
+int runRenderSequence(const RenderOptions& o);
 int runInfo(const std::string& scenePath, const std::string& glDevice);
 
 }  // namespace vct

@@ -4,7 +4,9 @@
 #include "app/gallery_command.h"
 #include "app/sweep_commands.h"
 #include "core/errors.h"
+#include "app/render_sequence.h"
 #include "eval/comparison.h"
+#include "eval/sequence_comparison.h"
 #include "gl/context.h"
 #include "methods/registry.h"
 #include "render/renderer.h"
@@ -38,6 +40,9 @@ struct CompareOptions {
     std::string giMethods;
     int refSpp = 256;
     int runs = 3;
+    std::string path;  // a camera path: compare every frame (eval/sequence_comparison.h)
+    int frames = 0;
+    std::string frameSeeds = "per-frame";
 };
 
 CompareOptions gCompare;
@@ -103,7 +108,39 @@ void progressLine(const std::string& line) {
     if (isatty(STDERR_FILENO)) std::cerr << "vct compare: " << line << "\n";
 }
 
+// `vct compare --path P --frames N`: the table of eval/sequence_comparison.h.
+int runSequenceCompare(const CompareOptions& o, const Scene& scene, const ComparisonSettings& s) {
+    SequenceSettings seq;
+    seq.comparison = s;
+    seq.path = resolveCameraPath(o.path, scene);
+    seq.frames = o.frames;
+    if (o.frameSeeds != "per-frame" && o.frameSeeds != "fixed")
+        throw UsageError("--frame-seeds " + o.frameSeeds + ": expected per-frame or fixed");
+    seq.perFrameSeeds = o.frameSeeds == "per-frame";
+    checkSequenceSettings(seq);
+    GlContext::shared(parseGlDevice(o.render.glDevice));
+    nlohmann::json doc = runSequenceComparison(scene, seq);
+    std::cout << "label                                  frame_ms    time_ms  rmse_mean rmse_worst instability  change\n";
+    for (const auto& r : doc["records"]) {
+        char line[320];
+        std::snprintf(line, sizeof line, "%-36s %10.2f %10.2f %10.4f %10.4f %11.4f %7.4f\n",
+                      r["label"].get<std::string>().c_str(), r["frame_ms"].get<double>(), r["time_ms"].get<double>(),
+                      r["rmse_mean"].get<double>(), r["rmse_worst"].get<double>(), r["instability"].get<double>(),
+                      r["temporal"]["change_rms"].get<double>());
+        std::cout << line;
+    }
+    const nlohmann::json& ref = doc["reference"];
+    for (const char* k : {"ao_temporal", "gi_temporal"})
+        if (ref.contains(k))
+            std::cout << "reference " << std::string(k).substr(0, 2) << ": instability " << ref[k]["instability"].get<double>()
+                      << " (its change " << ref[k]["change_rms"].get<double>() << ", noise "
+                      << ref[k]["reference_noise_rms"].get<double>() << ")\n";
+    std::cout << "wrote " << o.outDir << "/results.json and results.csv\n";
+    return 0;
+}
+
 int runCompare(const CompareOptions& o) {
+    if (o.path.empty() != (o.frames == 0)) throw UsageError("--path and --frames go together");
     Scene scene = loadScene(o.render.scenePath);
     ComparisonSettings s;
     s.base = makeRenderRequest(o.render, scene);
@@ -115,6 +152,7 @@ int runCompare(const CompareOptions& o) {
     s.variants.insert(s.variants.end(), gi.begin(), gi.end());
     checkComparisonSettings(s);
     s.progress = progressLine;
+    if (!o.path.empty()) return runSequenceCompare(o, scene, s);
     GlContext::shared(parseGlDevice(o.render.glDevice));
     nlohmann::json doc = runComparison(scene, s);
     std::cout << "label                                   time_ms   frame_ms     rmse   roi_rmse  cone_err  voxel_err\n";
@@ -147,6 +185,11 @@ void registerResearchCommands(CLI::App& app) {
     gCompareCmd->add_option("--gi", o.giMethods, "GI methods to score against the path tracer (e.g. vct)");
     gCompareCmd->add_option("--ref-spp", o.refSpp, "reference samples per pixel")->capture_default_str();
     gCompareCmd->add_option("--runs", o.runs, "timed runs after a warm-up (time_ms, the cold cost, and frame_ms, the next frame's, are their medians)")
+        ->capture_default_str();
+    gCompareCmd->add_option("--path", o.path, "camera path file or gltf:NAME|INDEX: compare every frame (with --frames)");
+    gCompareCmd->add_option("--frames", o.frames, "frames along --path");
+    gCompareCmd->add_option("--frame-seeds", o.frameSeeds,
+                            "the methods' seeds: per-frame (each frame its own) or fixed (the reference is always per-frame)")
         ->capture_default_str();
     addViewOptions(gCompareCmd, o.render);
 

@@ -46,6 +46,9 @@ std::vector<SettingDoc> allSettingDocs() {
     return all;
 }
 
+// G-buffers a session keeps (one per view and size).
+constexpr size_t kMaxCachedGBuffers = 8;
+
 struct RenderSession::Impl {
     GpuScene gpu;
     std::map<std::string, std::shared_ptr<GBuffer>> gbuffers;  // keyed by camera + size
@@ -125,7 +128,10 @@ RenderResult RenderSession::render(const RenderRequest& request) {
     // G-buffer: shared across renders of the same view.
     std::shared_ptr<GBuffer> gbuffer;
     if (plan.runs(kPassGBuffer)) {
-        auto& slot = mImpl->gbuffers[viewKey(view)];
+        const std::string key = viewKey(view);
+        // A camera path asks for a new view every frame: keep the last few, not every one.
+        if (!mImpl->gbuffers.count(key) && mImpl->gbuffers.size() >= kMaxCachedGBuffers) mImpl->gbuffers.clear();
+        auto& slot = mImpl->gbuffers[key];
         if (!slot) {
             slot = std::make_shared<GBuffer>(renderGBuffer(mImpl->gpu, view, timer));
             gl.checkErrors("gbuffer");

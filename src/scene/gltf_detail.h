@@ -35,6 +35,13 @@ struct LoadContext {
     size_t degenerateCount = 0;
     size_t repairedNormalCount = 0;
     std::vector<size_t> camerasWithInfiniteFar;
+    std::vector<int> nodeStack;  // the nodes from the root down to the one visitNode converts
+    // Each scene camera with the nodes that place it, for the animations that move them.
+    struct PlacedCamera {
+        size_t sceneCamera;          // index in Scene::cameras
+        std::vector<int> nodeChain;  // root first, the camera's own node last
+    };
+    std::vector<PlacedCamera> placedCameras;
 
     LoadContext(const tinygltf::Model& m, const std::string& p) : model(m), path(p) {}
 
@@ -75,6 +82,10 @@ void addLight(LoadContext& load, const tinygltf::Node& node, int nodeIndex, cons
 void addCamera(LoadContext& load, const tinygltf::Node& node, int nodeIndex, const glm::mat4& worldFromLocal);
 // Once the scene bounds are known: a far plane for the cameras whose zfar was 0 (infinite).
 void boundInfiniteFarPlanes(LoadContext& load);
+
+// Animations (gltf_animation.cpp): samples every animation that moves a placed camera into
+// Scene::cameraAnimations; the others are neither read nor checked.
+void addCameraAnimations(LoadContext& load);
 
 // The node hierarchy (gltf_nodes.cpp).
 std::vector<int> rootNodes(const tinygltf::Model& model);

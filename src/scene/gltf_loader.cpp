@@ -1,6 +1,7 @@
 // The loader's entry points: reading the file with tinygltf, then converting the model
-// (materials, the node hierarchy with its meshes, lights and cameras) and checking the
-// result. Also the one translation unit that compiles tinygltf and stb_image(_write).
+// (materials, the node hierarchy with its meshes, lights and cameras, the animations that
+// move a camera) and checking the result. Also the one translation unit that compiles
+// tinygltf and stb_image(_write).
 #define TINYGLTF_IMPLEMENTATION
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_WRITE_IMPLEMENTATION
@@ -64,6 +65,7 @@ Scene sceneFromModel(const tinygltf::Model& model, const std::string& pathForMes
     for (const glm::uvec3& t : scene.triangles)
         for (int k = 0; k < 3; ++k) scene.bounds.expand(scene.positions[t[k]]);
     boundInfiniteFarPlanes(load);
+    addCameraAnimations(load);
     return std::move(scene);
 }
 

@@ -85,9 +85,16 @@ void visitNode(LoadContext& load, int nodeIndex, const glm::mat4& worldFromParen
         for (size_t p = 0; p < mesh.primitives.size(); ++p)
             addPrimitive(load, node.mesh, int(p), worldFromLocal, offscreen);
     }
+    load.nodeStack.push_back(nodeIndex);
     addLight(load, node, nodeIndex, worldFromLocal);
-    if (node.camera >= 0) addCamera(load, node, nodeIndex, worldFromLocal);
+    if (node.camera >= 0) {
+        const size_t before = load.scene.cameras.size();
+        addCamera(load, node, nodeIndex, worldFromLocal);
+        // Remembered only when it was added (orthographic cameras are skipped).
+        if (load.scene.cameras.size() > before) load.placedCameras.push_back({before, load.nodeStack});
+    }
     for (int child : node.children) visitNode(load, child, worldFromLocal, offscreen, depth + 1);
+    load.nodeStack.pop_back();
 }
 
 }  // namespace vct::gltf_detail

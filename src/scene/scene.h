@@ -81,6 +81,27 @@ struct Camera {
     float zfar = 1000.f;
 };
 
+// One instant of a glTF camera animation, evaluated exactly at load time, in world space.
+struct CameraAnimationKey {
+    double time = 0.0;             // seconds, the animation's own clock
+    glm::vec3 eye{0.f};
+    glm::vec3 target{0.f};         // eye + the unit view direction
+    glm::vec3 up{0.f, 1.f, 0.f};   // unit, perpendicular to the view direction
+    float yfov = 0.8f;             // radians, the camera's (glTF animates no field of view)
+};
+
+// A glTF animation that moves a perspective camera (its node or an ancestor), sampled
+// densely: every key time of the channels that move the camera plus evenly spaced points
+// between them (gltf_animation.cpp says how many), meant to be joined linearly. Plain data
+// rather than a CameraPath because camera_path.h includes this header; scene/gltf_animation.h
+// turns a track into a CameraPath.
+struct CameraAnimationTrack {
+    std::string name;        // the glTF animation's name, "animation<index>" when it has none
+    int animation = -1;      // the animation's index in the file
+    std::string cameraName;  // the moved camera, as named in Scene::cameras
+    std::vector<CameraAnimationKey> keys;  // at least one, times strictly increasing
+};
+
 struct Scene {
     std::string path;  // where it came from (for messages), may be empty
 
@@ -96,6 +117,9 @@ struct Scene {
     std::vector<Texture> textures;
     std::vector<Light> lights;
     std::vector<Camera> cameras;
+    // One track per (animation, camera) pair whose animation moves that camera; cameras
+    // above hold the unanimated pose.
+    std::vector<CameraAnimationTrack> cameraAnimations;
 
     Bounds3 bounds;
     std::vector<std::string> warnings;  // load-time notes (e.g. degenerate triangles dropped)

@@ -19,7 +19,10 @@ SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache, const 
     SparseBuildOptions options;
     options.region = region.bounds;
     options.anisotropic = cone.anisotropic;
-    auto& slot = cache.grids[voxelGridKey(r, inject, options.anisotropic) + ";region=" + boundsKey(region.bounds)];
+    const std::string key = voxelGridKey(r, inject, options.anisotropic) + ";region=" + boundsKey(region.bounds);
+    // A camera path with a view-fitted region asks for new grids as it moves: keep a few.
+    if (!cache.grids.count(key) && cache.grids.size() >= kMaxCachedVolumes) cache.grids.clear();
+    auto& slot = cache.grids[key];
     if (!slot || !r.reuseSceneData) {
         auto scope = ctx.timer.scope("voxelize", false, Reruns::WhenSceneChanges);
         slot = std::make_shared<SparseVoxelScene>(

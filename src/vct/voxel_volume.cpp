@@ -6,6 +6,8 @@
 #include "vct/voxel_region.h"
 #include "voxelize/voxelize.h"
 
+#include <algorithm>
+
 namespace vct {
 
 std::string voxelGridKey(const RenderRequest& r, bool inject, bool aniso) {
@@ -40,6 +42,27 @@ void attachDarkRadiance(VoxelGrid& g) {
 
 }  // namespace
 
+namespace {
+
+// Caches a volume, dropping the oldest once the cache holds kMaxCachedVolumes: a camera path with a
+// view-fitted region or a moving clipmap asks for a new volume on many frames.
+template <typename T>
+void keepBounded(std::map<std::string, std::shared_ptr<T>>& map, std::deque<std::string>& order,
+                 const std::string& key, const std::shared_ptr<T>& value) {
+    map[key] = value;
+    order.push_back(key);
+    while (order.size() > kMaxCachedVolumes) {
+        const std::string& old = order.front();
+        if (std::count(order.begin(), order.end(), old) == 1) {
+            // Only one of the two maps holds it; erase is a no-op on the other.
+            map.erase(old);
+        }
+        order.pop_front();
+    }
+}
+
+}  // namespace
+
 VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVolumeCache& cache) {
     const RenderRequest& r = ctx.request;
     const bool inject = ctx.plan.runs(kPassInject);
@@ -48,10 +71,14 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
     // Clipmaps keep isotropic mips only (clipmap/clipmap.h).
     const bool aniso = levels == 0 && cone.anisotropic;
     std::string key = voxelGridKey(r, inject, aniso) + ";region=" + boundsKey(region.bounds);
+    // A clipmap is its layout: the cascades' origins snap to their voxels, so a camera moving
+    // less than a snap step keeps the same cascades (the same voxels), a larger move builds new ones.
+    ClipmapLayout layout;
     if (levels > 0) {
-        const glm::vec3 e = r.camera.eye;
-        key += ";clipmap=" + std::to_string(levels) + "@" + std::to_string(e.x) + "," + std::to_string(e.y) + "," +
-               std::to_string(e.z);
+        layout = computeClipmapLayout(region.bounds, r.camera.eye, levels, r.voxelRes);
+        key += ";clipmap=" + std::to_string(levels);
+        for (const glm::ivec3& o : layout.originIndex)
+            key += "@" + std::to_string(o.x) + "," + std::to_string(o.y) + "," + std::to_string(o.z);
     }
     VoxelVolume v;
     if (r.reuseSceneData) {
@@ -68,13 +95,12 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
         // Bounce cones would run inside one level and take its border for the sky: clipmap
         // levels hold direct light only.
         refuseVctBounces(r.params, inject, "vct.clipmap.levels");
-        const ClipmapLayout layout = computeClipmapLayout(region.bounds, r.camera.eye, levels, r.voxelRes);
         v.clipmap = std::make_shared<Clipmap>(buildClipmap(ctx.gpu, ctx.scene, layout, inject, r.params, ctx.timer));
         gl.checkErrors("clipmap");
         ctx.runCounts["voxelize"]++;
         if (inject) ctx.runCounts["inject"]++;
         ctx.runCounts["mips"]++;
-        if (r.reuseSceneData) cache.clipmaps[key] = v.clipmap;
+        if (r.reuseSceneData) keepBounded(cache.clipmaps, cache.order, key, v.clipmap);
     } else if (levels == 0 && !v.grid) {
         v.grid = std::make_shared<VoxelGrid>(voxelizeScene(ctx.gpu, region.bounds, r.voxelRes, r.params, ctx.timer));
         gl.checkErrors("voxelize");
@@ -89,7 +115,7 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
         buildMips(*v.grid, aniso, ctx.timer);
         gl.checkErrors("mips");
         ctx.runCounts["mips"]++;
-        if (r.reuseSceneData) cache.grids[key] = v.grid;
+        if (r.reuseSceneData) keepBounded(cache.grids, cache.order, key, v.grid);
     }
     if (!inject && ctx.plan.runs(kPassConeGi)) {
         if (v.clipmap)

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <deque>
 #include <map>
 #include <memory>
 #include <string>
@@ -24,9 +25,12 @@ struct VoxelVolume {
 };
 
 // The grids a session keeps (the key: resolution, injection, bounces, region, clipmap).
+// At most kMaxCachedVolumes, the oldest dropped first.
+constexpr size_t kMaxCachedVolumes = 6;
 struct VoxelVolumeCache {
     std::map<std::string, std::shared_ptr<VoxelGrid>> grids;
     std::map<std::string, std::shared_ptr<Clipmap>> clipmaps;
+    std::deque<std::string> order;  // keys of both maps, oldest first
 };
 
 // A key of everything a grid depends on: two requests with the same key share one grid.

@@ -1,0 +1,355 @@
+// glTF animations that move a camera: each sampler read and checked, evaluated as glTF 2.0
+// defines it, composed through the camera's node chain and sampled densely into
+// Scene::cameraAnimations; and those tracks listed and turned into camera paths.
+#include "scene/gltf_animation.h"
+
+#include "core/errors.h"  // UsageError, header-only: the scene layer's name lookups use it as camera.cpp does
+#include "scene/gltf_detail.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+
+namespace vct {
+
+namespace gltf_detail {
+
+namespace {
+
+// Points sampled inside each interval between consecutive key times, so the path has 16
+// linear segments per interval: a camera turning 90 degrees in one interval then strays from
+// the exact arc by 1 - cos(90 / 32 degrees), about 0.12% of its distance to the pivot.
+constexpr int kSamplesInsideInterval = 15;
+
+enum class Interpolation { Linear, Step, CubicSpline };
+enum class TrsPath { Translation, Rotation, Scale };
+
+// A translation or scale (x, y, z, unused) or a rotation quaternion (x, y, z, w), glTF's order.
+using Value4 = std::array<double, 4>;
+
+// One sampler, read and checked.
+struct Sampler {
+    Interpolation interpolation = Interpolation::Linear;
+    int components = 3;          // 3 (translation, scale) or 4 (rotation)
+    std::vector<double> times;   // seconds, strictly increasing, at least one
+    std::vector<double> values;  // per key: the value, or (in-tangent, value, out-tangent) for CUBICSPLINE
+};
+
+// A channel that moves a node of a camera's chain, with its sampler.
+struct TrsChannel {
+    int node = -1;
+    TrsPath path = TrsPath::Translation;
+    Sampler sampler;
+};
+
+std::string num(double x) {
+    std::ostringstream os;
+    os << x;
+    return os.str();
+}
+
+// False for "weights" and for paths of extensions: those never move a camera.
+bool parseTrsPath(const std::string& name, TrsPath* path) {
+    if (name == "translation") *path = TrsPath::Translation;
+    else if (name == "rotation") *path = TrsPath::Rotation;
+    else if (name == "scale") *path = TrsPath::Scale;
+    else return false;
+    return true;
+}
+
+bool parseInterpolation(const std::string& name, Interpolation* out) {
+    if (name == "LINEAR") *out = Interpolation::Linear;
+    else if (name == "STEP") *out = Interpolation::Step;
+    else if (name == "CUBICSPLINE") *out = Interpolation::CubicSpline;
+    else return false;
+    return true;
+}
+
+// glTF asks for strictly increasing, finite key times; at least one is needed to have a value.
+void checkTimes(const LoadContext& load, const std::vector<double>& times, const std::string& where) {
+    if (times.empty()) load.fail(where + ": input has no keys");
+    for (size_t i = 0; i < times.size(); ++i) {
+        if (!std::isfinite(times[i])) load.fail(where + ": input time " + std::to_string(i) + " is not finite");
+        if (i > 0 && !(times[i] > times[i - 1]))
+            load.fail(where + ": input times not strictly increasing: key " + std::to_string(i) + " (" +
+                      num(times[i]) + " s) after key " + std::to_string(i - 1) + " (" + num(times[i - 1]) + " s)");
+    }
+}
+
+// Sampler `index` of `anim`, read for values of `components` numbers; `where` names the
+// animation and the channel that uses it.
+Sampler readSampler(const LoadContext& load, const tinygltf::Animation& anim, int index, int components,
+                    const std::string& where) {
+    if (index < 0 || index >= int(anim.samplers.size()))
+        load.fail(where + ": " + outOfRange("sampler", index, anim.samplers.size()));
+    const tinygltf::AnimationSampler& s = anim.samplers[size_t(index)];
+    const std::string at = where + ", sampler " + std::to_string(index);
+    Sampler out;
+    out.components = components;
+    if (!parseInterpolation(s.interpolation, &out.interpolation))
+        load.fail(at + ": unknown interpolation '" + s.interpolation + "'");
+    size_t keyCount = 0, valueCount = 0;
+    out.times = readAccessor(load, s.input, at + " input", 1, &keyCount);
+    checkTimes(load, out.times, at);
+    out.values = readAccessor(load, s.output, at + " output", components, &valueCount);
+    const size_t perKey = out.interpolation == Interpolation::CubicSpline ? 3 : 1;
+    if (valueCount != perKey * keyCount)
+        load.fail(at + ": output has " + std::to_string(valueCount) + " elements for " + std::to_string(keyCount) +
+                  " key times, expected " + std::to_string(perKey * keyCount));
+    for (size_t i = 0; i < out.values.size(); ++i)
+        if (!std::isfinite(out.values[i]))
+            load.fail(at + ": output element " + std::to_string(i / size_t(components)) + " is not finite");
+    return out;
+}
+
+// Element `part` of key `key`: 0 in-tangent, 1 value, 2 out-tangent for CUBICSPLINE; the
+// value (part ignored) otherwise.
+Value4 element(const Sampler& s, size_t key, int part) {
+    const bool cubic = s.interpolation == Interpolation::CubicSpline;
+    const size_t first = (cubic ? 3 * key + size_t(part) : key) * size_t(s.components);
+    Value4 v{0.0, 0.0, 0.0, 0.0};
+    for (int c = 0; c < s.components; ++c) v[size_t(c)] = s.values[first + size_t(c)];
+    return v;
+}
+
+Value4 keyValue(const Sampler& s, size_t key) { return element(s, key, 1); }
+
+Value4 normalized(Value4 q) {
+    const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    for (double& x : q) x /= n;  // a zero quaternion becomes NaN, which the camera check reports
+    return q;
+}
+
+Value4 lerp(const Value4& a, const Value4& b, double u) {
+    Value4 v;
+    for (size_t c = 0; c < 4; ++c) v[c] = a[c] + u * (b[c] - a[c]);
+    return v;
+}
+
+// glTF's LINEAR rotation: slerp of the normalized quaternions along the shorter arc (q and
+// -q are the same rotation, so the one nearer `a` is used).
+Value4 slerpShortest(Value4 a, Value4 b, double u) {
+    a = normalized(a);
+    b = normalized(b);
+    double d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
+    if (d < 0.0) {
+        for (double& x : b) x = -x;
+        d = -d;
+    }
+    // Nearly equal rotations: sin(theta) underflows the weights; the chord is the arc there.
+    if (d > 0.9999999) return normalized(lerp(a, b, u));
+    const double theta = std::acos(std::min(d, 1.0));
+    const double wa = std::sin((1.0 - u) * theta) / std::sin(theta), wb = std::sin(u * theta) / std::sin(theta);
+    Value4 v;
+    for (size_t c = 0; c < 4; ++c) v[c] = wa * a[c] + wb * b[c];
+    return v;
+}
+
+// glTF 2.0 appendix C, CUBICSPLINE: the cubic Hermite through v0 and v1 whose tangents, the
+// key's out-tangent b0 and the next key's in-tangent a1, are scaled by the interval td.
+Value4 hermite(const Value4& v0, const Value4& b0, const Value4& v1, const Value4& a1, double td, double u) {
+    const double u2 = u * u, u3 = u2 * u;
+    const double h00 = 2 * u3 - 3 * u2 + 1, h10 = u3 - 2 * u2 + u, h01 = -2 * u3 + 3 * u2, h11 = u3 - u2;
+    Value4 v;
+    for (size_t c = 0; c < 4; ++c) v[c] = h00 * v0[c] + h10 * td * b0[c] + h01 * v1[c] + h11 * td * a1[c];
+    return v;
+}
+
+// The sampler's value at time t; before the first key and after the last, that key's value.
+Value4 sample(const Sampler& s, bool rotation, double t) {
+    const size_t n = s.times.size();
+    if (t <= s.times.front()) return keyValue(s, 0);
+    if (t >= s.times.back()) return keyValue(s, n - 1);
+    const size_t k = size_t(std::upper_bound(s.times.begin(), s.times.end(), t) - s.times.begin()) - 1;
+    const double td = s.times[k + 1] - s.times[k];
+    const double u = (t - s.times[k]) / td;
+    switch (s.interpolation) {
+        case Interpolation::Step: return keyValue(s, k);
+        case Interpolation::Linear:
+            return rotation ? slerpShortest(keyValue(s, k), keyValue(s, k + 1), u)
+                            : lerp(keyValue(s, k), keyValue(s, k + 1), u);
+        case Interpolation::CubicSpline: {
+            const Value4 v = hermite(keyValue(s, k), element(s, k, 2), keyValue(s, k + 1), element(s, k + 1, 0), td, u);
+            return rotation ? normalized(v) : v;
+        }
+    }
+    return keyValue(s, k);
+}
+
+// The animation's channels that move a node of `chain`, each with its sampler read and
+// checked; the others (weights, other nodes, extensions' paths) are skipped unread.
+std::vector<TrsChannel> channelsMoving(const LoadContext& load, int animIndex, const std::vector<int>& chain) {
+    const tinygltf::Animation& anim = load.model.animations[size_t(animIndex)];
+    const std::string animWhere = label("animation", animIndex, anim.name);
+    std::vector<TrsChannel> out;
+    for (size_t c = 0; c < anim.channels.size(); ++c) {
+        const tinygltf::AnimationChannel& ch = anim.channels[c];
+        TrsPath path = TrsPath::Translation;
+        const bool inChain = std::find(chain.begin(), chain.end(), ch.target_node) != chain.end();
+        if (!parseTrsPath(ch.target_path, &path) || !inChain) continue;
+        const tinygltf::Node& node = load.model.nodes[size_t(ch.target_node)];
+        const std::string where = animWhere + ", channel " + std::to_string(c) + " (" +
+                                  label("node", ch.target_node, node.name) + " " + ch.target_path + ")";
+        if (node.matrix.size() == 16)
+            load.fail(where + ": the node has a matrix; glTF animates only nodes given as translation/rotation/scale");
+        for (const TrsChannel& other : out)
+            if (other.node == ch.target_node && other.path == path)
+                load.fail(where + ": a second channel for the same node and path");
+        const int components = path == TrsPath::Rotation ? 4 : 3;
+        out.push_back({ch.target_node, path, readSampler(load, anim, ch.sampler, components, where)});
+    }
+    return out;
+}
+
+// Node `index`'s parentFromNode at time t: its own TRS (or matrix) with the channels that
+// target it substituted, in double precision.
+glm::dmat4 localAt(const LoadContext& load, int index, const std::vector<TrsChannel>& channels, double t) {
+    const tinygltf::Node& node = load.model.nodes[size_t(index)];
+    if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());  // never animated (channelsMoving)
+    Value4 tr{0.0, 0.0, 0.0, 0.0}, r{0.0, 0.0, 0.0, 1.0}, s{1.0, 1.0, 1.0, 0.0};
+    if (node.translation.size() == 3) std::copy(node.translation.begin(), node.translation.end(), tr.begin());
+    if (node.rotation.size() == 4) std::copy(node.rotation.begin(), node.rotation.end(), r.begin());
+    if (node.scale.size() == 3) std::copy(node.scale.begin(), node.scale.end(), s.begin());
+    for (const TrsChannel& c : channels) {
+        if (c.node != index) continue;
+        const Value4 v = sample(c.sampler, c.path == TrsPath::Rotation, t);
+        (c.path == TrsPath::Translation ? tr : c.path == TrsPath::Rotation ? r : s) = v;
+    }
+    const Value4 q = normalized(r);
+    const glm::dquat rotation(q[3], q[0], q[1], q[2]);  // glm is (w, x, y, z)
+    return glm::translate(glm::dmat4(1.0), glm::dvec3(tr[0], tr[1], tr[2])) * glm::mat4_cast(rotation) *
+           glm::scale(glm::dmat4(1.0), glm::dvec3(s[0], s[1], s[2]));
+}
+
+glm::dmat4 worldAt(const LoadContext& load, const std::vector<int>& chain, const std::vector<TrsChannel>& channels,
+                   double t) {
+    glm::dmat4 worldFromNode(1.0);
+    for (int index : chain) worldFromNode = worldFromNode * localAt(load, index, channels, t);
+    return worldFromNode;
+}
+
+// The camera under `worldFromCamera`, as addCamera places a static one: eye at the node's
+// origin, looking down its -Z with its +Y, re-orthogonalized, as up.
+CameraAnimationKey cameraKey(const LoadContext& load, const glm::dmat4& worldFromCamera, double t, float yfov,
+                             const std::string& where) {
+    const glm::dmat3 linear(worldFromCamera);
+    const glm::dvec3 eye(worldFromCamera[3]);
+    glm::dvec3 forward = linear * glm::dvec3(0.0, 0.0, -1.0);
+    glm::dvec3 up = linear * glm::dvec3(0.0, 1.0, 0.0);
+    const std::string at = where + " at " + num(t) + " s";
+    if (!finite3(glm::vec3(eye)) || !finite3(glm::vec3(forward)) || !finite3(glm::vec3(up)))
+        load.fail(at + ": node transform is not finite");
+    if (!(glm::length(forward) > 0.0)) load.fail(at + ": node transform collapses the view direction");
+    forward = glm::normalize(forward);
+    up -= glm::dot(up, forward) * forward;
+    if (!(glm::length(up) > 0.0)) load.fail(at + ": node transform collapses the up direction");
+    CameraAnimationKey key;
+    key.time = t;
+    key.eye = glm::vec3(eye);
+    key.target = glm::vec3(eye + forward);
+    key.up = glm::vec3(glm::normalize(up));
+    key.yfov = yfov;
+    return key;
+}
+
+// Every key time of the channels, and kSamplesInsideInterval evenly spaced times inside each
+// interval between consecutive ones.
+std::vector<double> sampleTimes(const std::vector<TrsChannel>& channels) {
+    std::vector<double> keys;
+    for (const TrsChannel& c : channels) keys.insert(keys.end(), c.sampler.times.begin(), c.sampler.times.end());
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    std::vector<double> out;
+    for (size_t i = 0; i < keys.size(); ++i) {
+        out.push_back(keys[i]);
+        if (i + 1 == keys.size()) break;
+        for (int j = 1; j <= kSamplesInsideInterval; ++j) {
+            const double t = keys[i] + (keys[i + 1] - keys[i]) * j / (kSamplesInsideInterval + 1);
+            if (t > out.back() && t < keys[i + 1]) out.push_back(t);  // keys a few ulps apart keep times increasing
+        }
+    }
+    return out;
+}
+
+CameraAnimationTrack sampleTrack(const LoadContext& load, int animIndex, const LoadContext::PlacedCamera& placed,
+                                 const std::vector<TrsChannel>& channels) {
+    const tinygltf::Animation& anim = load.model.animations[size_t(animIndex)];
+    const Camera& camera = load.scene.cameras[placed.sceneCamera];
+    CameraAnimationTrack track;
+    track.name = anim.name.empty() ? "animation" + std::to_string(animIndex) : anim.name;
+    track.animation = animIndex;
+    track.cameraName = camera.name;
+    const std::string where = label("animation", animIndex, anim.name) + " (camera '" + camera.name + "')";
+    for (double t : sampleTimes(channels))
+        track.keys.push_back(cameraKey(load, worldAt(load, placed.nodeChain, channels, t), t, camera.yfov, where));
+    return track;
+}
+
+}  // namespace
+
+void addCameraAnimations(LoadContext& load) {
+    for (size_t a = 0; a < load.model.animations.size(); ++a)
+        for (const LoadContext::PlacedCamera& placed : load.placedCameras) {
+            const std::vector<TrsChannel> channels = channelsMoving(load, int(a), placed.nodeChain);
+            if (!channels.empty()) load.scene.cameraAnimations.push_back(sampleTrack(load, int(a), placed, channels));
+        }
+}
+
+}  // namespace gltf_detail
+
+namespace {
+
+// "12" -> 12; false for anything but a short run of digits, so names like "2b" stay names.
+bool parseIndex(const std::string& s, size_t* index) {
+    if (s.empty() || s.size() > 9) return false;
+    for (char c : s)
+        if (c < '0' || c > '9') return false;
+    *index = size_t(std::stoul(s));
+    return true;
+}
+
+}  // namespace
+
+std::vector<CameraAnimationInfo> listCameraAnimations(const Scene& scene) {
+    std::vector<CameraAnimationInfo> out;
+    for (const CameraAnimationTrack& track : scene.cameraAnimations)
+        out.push_back({track.name, track.animation, track.cameraName, track.keys.front().time,
+                       track.keys.back().time, track.keys.size()});
+    return out;
+}
+
+std::string describeCameraAnimations(const Scene& scene) {
+    const std::vector<CameraAnimationInfo> infos = listCameraAnimations(scene);
+    if (infos.empty()) return "(none)";
+    std::ostringstream os;
+    for (size_t i = 0; i < infos.size(); ++i)
+        os << (i ? ", " : "") << i << " '" << infos[i].name << "' (camera '" << infos[i].cameraName << "', "
+           << infos[i].start << ".." << infos[i].end << " s, " << infos[i].keyCount << " keys)";
+    return os.str();
+}
+
+CameraPath cameraAnimationPath(const Scene& scene, const std::string& nameOrIndex) {
+    const CameraAnimationTrack* found = nullptr;
+    for (const CameraAnimationTrack& track : scene.cameraAnimations)
+        if (!found && track.name == nameOrIndex) found = &track;
+    size_t index = 0;
+    if (!found && parseIndex(nameOrIndex, &index) && index < scene.cameraAnimations.size())
+        found = &scene.cameraAnimations[index];
+    if (!found)
+        throw UsageError("no camera animation '" + nameOrIndex + "' in " +
+                         (scene.path.empty() ? std::string("the scene") : scene.path) +
+                         "; the scene has: " + describeCameraAnimations(scene));
+    CameraPath path;
+    path.source = (scene.path.empty() ? std::string() : scene.path + ": ") + "animation '" + found->name + "'";
+    path.interpolation = PathInterpolation::Linear;  // the keys are dense exact samples (gltf_animation.h)
+    for (const CameraAnimationKey& k : found->keys)
+        path.keys.push_back({k.time, k.eye, k.target, k.up, glm::degrees(k.yfov)});
+    return path;
+}
+
+}  // namespace vct

@@ -1,0 +1,49 @@
+// A glTF file's own camera animations as camera paths.
+//
+// At load time (sceneFromModel) every animation whose translation, rotation or scale channels
+// move a perspective camera's node, or an ancestor of it, is evaluated exactly as glTF 2.0
+// defines it (LINEAR with shortest-path slerp for rotations, STEP, CUBICSPLINE Hermite with
+// tangents scaled by the key interval), composed through the camera's node chain and
+// sampled into Scene::cameraAnimations: every key time of those channels plus 15 evenly
+// spaced points inside each interval between consecutive ones. The path made of them is
+// linear between those dense exact samples, so it passes through every glTF key and strays
+// from the exact motion by at most the chord of a sixteenth of a key interval.
+//
+// Animations that move no camera are neither read nor checked (files that loaded before still
+// load); "weights" channels and skins are ignored. A malformed sampler of an animation that
+// moves a camera (times not strictly increasing, an accessor out of range, counts that do not
+// match, non-finite values, an unknown interpolation) is a SceneError naming the file, the
+// animation, the channel and the sampler.
+#pragma once
+
+#include "scene/camera_path.h"
+#include "scene/scene.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace vct {
+
+struct CameraAnimationInfo {
+    std::string name;        // as cameraAnimationPath accepts it
+    int animation = -1;      // index of the animation in the glTF file
+    std::string cameraName;  // the camera it moves
+    double start = 0.0;      // seconds, first and last sample
+    double end = 0.0;
+    size_t keyCount = 0;     // samples in the path
+};
+
+// One entry per Scene::cameraAnimations track, in that order.
+std::vector<CameraAnimationInfo> listCameraAnimations(const Scene& scene);
+
+// "0 'orbit' (camera 'cam', 0..4 s, 65 keys), 1 ..." or "(none)", for `vct info` and messages.
+std::string describeCameraAnimations(const Scene& scene);
+
+// Track `nameOrIndex` (an animation name, the first track of that name, or an index into
+// Scene::cameraAnimations) as a linear CameraPath whose source is
+// "<scene path>: animation '<name>'". Throws UsageError listing the scene's camera animations
+// when there is no such track.
+CameraPath cameraAnimationPath(const Scene& scene, const std::string& nameOrIndex);
+
+}  // namespace vct
