@@ -39,23 +39,49 @@ ClipmapLayout computeClipmapLayout(const Bounds3& region, const glm::vec3& focus
     c.resolution = std::clamp((resolution + 3) / 4 * 4, 32, 512);
     c.region = region;
     c.focus = glm::clamp(focus, region.min, region.max);
-    float half = 0.f;
-    for (int a = 0; a < 3; ++a)
-        half = std::max(half, std::max(c.focus[a] - region.min[a], region.max[a] - c.focus[a]));
-    half = std::max(half, 1e-6f * std::max(1.f, glm::length(c.focus)));
-    // The coarsest level spans 2 * half plus 3 voxels on each side: one for the snap of its
-    // centre, one of padding (surfaces on the boundary stay inside), one of trilinear reach.
-    const float coarseVoxel = 2.f * half / float(c.resolution - 6);
+    // The lattice depends on the region only, never on the focus: a camera that moves keeps
+    // every voxel where it was, and a cascade that follows it moves by whole voxels. The
+    // coarsest level covers the region from its centre with 3 voxels to spare on each side
+    // (one for the snap of its centre, one of padding, one of trilinear reach).
+    const float extent = std::max(region.maxExtent(), 1e-6f * std::max(1.f, glm::length(region.center())));
+    const float coarseVoxel = extent / float(c.resolution - 6);
     c.baseVoxelSize = coarseVoxel / float(1 << (levelCount - 1));
-    c.anchor = region.min;
-    const glm::dvec3 focusIndex = glm::dvec3(c.focus - c.anchor) / double(c.baseVoxelSize);
-    for (int l = 0; l < levelCount; ++l) {
-        const double snap = double(1 << (l + 1));  // two voxels of level l
+    // Half a voxel below the region: a surface on the region's boundary (a floor at its bottom)
+    // then lies inside a layer of voxels at every level, not on a face where rounding would
+    // pick a different side per level and draw a seam where the levels meet.
+    c.anchor = region.min - glm::vec3(0.5f * c.baseVoxelSize);
+    auto snapped = [&](const glm::vec3& p, int level) {
+        const glm::dvec3 index = glm::dvec3(p - c.anchor) / double(c.baseVoxelSize);
+        const double snap = double(1 << (level + 1));  // two voxels of the level: one of the next
         glm::ivec3 centre;
-        for (int a = 0; a < 3; ++a) centre[a] = int(std::llround(focusIndex[a] / snap) * (long long)snap);
-        c.originIndex.push_back(centre - glm::ivec3((c.resolution / 2) << l));
+        for (int a = 0; a < 3; ++a) centre[a] = int(std::llround(index[a] / snap) * (long long)snap);
+        return centre;
+    };
+    c.originIndex.assign(size_t(levelCount), glm::ivec3(0));
+    const int top = levelCount - 1;
+    c.originIndex[size_t(top)] = snapped(region.center(), top) - glm::ivec3((c.resolution / 2) << top);
+    // Finer levels centre on the focus in steps of two of their voxels, kept inside the next
+    // coarser level clear of its border margin and blend band (its level of detail stays
+    // continuous); the clamp moves in the same steps, so nesting stays exact.
+    for (int l = top - 1; l >= 0; --l) {
+        const int step = 1 << (l + 1);
+        const int span = c.resolution << l;
+        const int room = int(std::ceil(gpu::CLIPMAP_BORDER_MARGIN + gpu::CLIPMAP_BLEND_WIDTH + 1.f)) * step;
+        const glm::ivec3 parent = c.originIndex[size_t(l + 1)];
+        const int parentSpan = c.resolution << (l + 1);
+        glm::ivec3 origin = snapped(c.focus, l) - glm::ivec3(span / 2);
+        for (int a = 0; a < 3; ++a) origin[a] = std::clamp(origin[a], parent[a] + room, parent[a] + parentSpan - span - room);
+        c.originIndex[size_t(l)] = origin;
     }
     return c;
+}
+
+glm::vec3 clipmapFocus(const Bounds3& region, const Camera& camera, int levelCount, int resolution) {
+    const ClipmapLayout atEye = computeClipmapLayout(region, camera.eye, levelCount, resolution);
+    const glm::vec3 forward = camera.target - camera.eye;
+    if (!(glm::length(forward) > 0.f)) return camera.eye;
+    const float ahead = 0.25f * float(atEye.resolution) * atEye.baseVoxelSize;
+    return camera.eye + glm::normalize(forward) * ahead;
 }
 
 namespace {

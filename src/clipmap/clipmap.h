@@ -44,10 +44,17 @@ struct ClipmapLayout {
     Bounds3 bounds(int level) const;
 };
 
-// Levels of `resolution` (rounded up to a multiple of 4, clamped to [32, 512]) centred on
-// `focus` (moved into `region` first), the coarsest covering `region` from there.
-// levelCount in [1, 8].
+// Levels of `resolution` (rounded up to a multiple of 4, clamped to [32, 512]) on a lattice
+// that depends on `region` alone (voxel sizes and anchor): the coarsest level covers the region
+// from its centre, each finer one centres on `focus` (moved into `region` first) in steps of two
+// of its voxels, clamped inside the next coarser level. A focus that moves less than a step keeps
+// a level's voxels; a step moves them by whole voxels, never resamples them. levelCount in [1, 8].
 ClipmapLayout computeClipmapLayout(const Bounds3& region, const glm::vec3& focus, int levelCount, int resolution);
+
+// The point a camera's cascades centre on: a quarter of level 0's span ahead of the eye along
+// the view direction. The view sees only what lies in front of it, so a level centred on the
+// eye would spend half its voxels behind the camera.
+glm::vec3 clipmapFocus(const Bounds3& region, const Camera& camera, int levelCount, int resolution);
 
 struct Clipmap {
     ClipmapLayout layout;

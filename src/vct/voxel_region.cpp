@@ -13,6 +13,9 @@ namespace vct {
 std::string voxelRegionMode(const RenderRequest& r) {
     const std::string mode = vctSettings().read(r.params).region;
     if (mode != "auto") return mode;
+    // A clipmap follows the camera over the whole scene: a region fitted to each view would move
+    // its lattice with every frame.
+    if (clipmapLevelCount(r) > 0) return "scene";
     return (r.ao == kVctMethodName && r.gi != kVctMethodName) ? "fit" : "scene";
 }
 
@@ -29,7 +32,10 @@ std::string voxelRegionExplanation(const RenderRequest& r) {
           << (r.gi == kVctMethodName ? " (vct.region=fit: GI cones see only that)" : " (AO only: nothing farther occludes)");
     else
         s << "region = scene bounds"
-          << (explicitMode ? " (vct.region=scene)" : r.gi == kVctMethodName ? " (GI: light travels far)" : "");
+          << (explicitMode                  ? " (vct.region=scene)"
+              : clipmapLevelCount(r) > 0     ? " (clipmap: its lattice is the scene's, the levels follow the camera)"
+              : r.gi == kVctMethodName       ? " (GI: light travels far)"
+                                             : "");
     const int levels = clipmapLevelCount(r);
     if (levels > 0)
         s << "; " << levels << " clipmap levels of " << r.voxelRes << "^3 around the camera (isotropic mips)";
@@ -93,7 +99,9 @@ VoxelRegion chooseRegionBounds(const RenderRequest& r, const Scene& scene, const
     region.mode = voxelRegionMode(r);
     region.bounds = scene.bounds;
     if (region.mode == "scene") {
-        region.why = r.gi == kVctMethodName ? "GI: light reaches the view from the whole scene" : "vct.region=scene";
+        region.why = r.gi == kVctMethodName       ? "GI: light reaches the view from the whole scene"
+                     : clipmapLevelCount(r) > 0   ? "clipmap: one lattice over the scene, the levels follow the camera"
+                                                  : "vct.region=scene";
         return region;
     }
     if (!gbuffer || !gbuffer->position) {

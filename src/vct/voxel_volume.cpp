@@ -75,7 +75,8 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
     // less than a snap step keeps the same cascades (the same voxels), a larger move builds new ones.
     ClipmapLayout layout;
     if (levels > 0) {
-        layout = computeClipmapLayout(region.bounds, r.camera.eye, levels, r.voxelRes);
+        layout = computeClipmapLayout(region.bounds, clipmapFocus(region.bounds, r.camera, levels, r.voxelRes), levels,
+                                      r.voxelRes);
         key += ";clipmap=" + std::to_string(levels);
         for (const glm::ivec3& o : layout.originIndex)
             key += "@" + std::to_string(o.x) + "," + std::to_string(o.y) + "," + std::to_string(o.z);
