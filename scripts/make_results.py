@@ -7,7 +7,9 @@
 Steps: probe which methods of the spec this build can run (a 16x16 render each; the others are
 left out and listed in the report), write the runnable spec to WORK/study.json, `vct sweep` it
 into WORK/sweep (from scratch unless --resume), `vct merge` into WORK/merged, plot error against
-time (scripts/plot_pareto.py) into docs/results/, and write the tables to docs/results.md.
+time (scripts/plot_pareto.py) into docs/results/, and write the tables to docs/results.md; then the
+sequence study (scripts/sequence_study.py, sweeps/sequences.json): `vct compare --path` per case,
+its tables and per-frame plots appended (`--sequences-only` reruns just that section).
 Run from the repository root (`make results` does).
 """
 import argparse
@@ -21,6 +23,21 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 import plot_pareto  # noqa: E402  (after the path tweak)
+import sequence_study  # noqa: E402
+
+SEQ_BEGIN, SEQ_END = "<!-- sequences: begin -->", "<!-- sequences: end -->"
+
+
+def sequence_section(args, vct, work, plot_dir, docs_dir):
+    """The sequence study's markdown, between markers (so --sequences-only can replace it)."""
+    with open(os.path.join(REPO, args.sequences)) as f:
+        spec = json.load(f)
+    for name in os.listdir(plot_dir) if os.path.isdir(plot_dir) else []:
+        if name.startswith("seq_") and name.endswith(".svg"):
+            os.remove(os.path.join(plot_dir, name))
+    cases = sequence_study.run_cases(vct, spec, os.path.join(work, "sequences"), args.resume)
+    plots = sequence_study.plot(cases, plot_dir)
+    return [SEQ_BEGIN] + sequence_study.markdown(cases, plots, docs_dir, "make results") + [SEQ_END]
 
 
 def run(cmd, **kw):
@@ -193,10 +210,27 @@ def main():
     ap.add_argument("--work", default="out/results-study")
     ap.add_argument("--docs", default="docs")
     ap.add_argument("--resume", action="store_true", help="keep WORK/sweep and run only the missing cases")
+    ap.add_argument("--sequences", default="sweeps/sequences.json", help="the camera-path cases")
+    ap.add_argument("--sequences-only", action="store_true",
+                    help="rerun only the sequence study and replace its section of results.md")
     args = ap.parse_args()
     plot_pareto._import_matplotlib()  # may re-exec under /usr/bin/python3: do it before any work
     vct = os.path.abspath(os.path.join(REPO, args.vct))
     work = os.path.join(REPO, args.work)
+    plot_dir = os.path.join(REPO, args.docs, "results")
+    out = os.path.join(REPO, args.docs, "results.md")
+    if args.sequences_only:
+        with open(out) as f:
+            text = f.read()
+        section = "\n".join(sequence_section(args, vct, work, plot_dir, os.path.dirname(out)))
+        if SEQ_BEGIN in text and SEQ_END in text:
+            text = text[:text.index(SEQ_BEGIN)] + section + text[text.index(SEQ_END) + len(SEQ_END):]
+        else:
+            text = text.rstrip("\n") + "\n\n" + section + "\n"
+        with open(out, "w") as f:
+            f.write(text)
+        print(f"make_results: replaced the sequence section of {os.path.relpath(out, REPO)}")
+        return
     sweep_dir, merged_dir = os.path.join(work, "sweep"), os.path.join(work, "merged")
     if not args.resume and os.path.exists(sweep_dir):
         shutil.rmtree(sweep_dir)
@@ -217,17 +251,17 @@ def main():
     if run([vct, "merge", sweep_dir, "-o", merged_dir]).returncode != 0:
         sys.exit("make_results: vct merge failed")
     merged_json = os.path.join(merged_dir, "results.json")
-    plot_dir = os.path.join(REPO, args.docs, "results")
     if os.path.isdir(plot_dir):
         for name in os.listdir(plot_dir):
-            if name.endswith(".svg"):
+            if name.endswith(".svg") and not name.startswith("seq_"):
                 os.remove(os.path.join(plot_dir, name))
     plots = plot_pareto.plot_all(merged_json, plot_dir, "rmse")
     plots += plot_pareto.plot_all(merged_json, plot_dir, "roi_rmse")
     with open(merged_json) as f:
         merged = json.load(f)
-    out = os.path.join(REPO, args.docs, "results.md")
     write_markdown(merged, plots, dropped, args.spec, out, "make results")
+    with open(out, "a") as f:
+        f.write("\n" + "\n".join(sequence_section(args, vct, work, plot_dir, os.path.dirname(out))) + "\n")
     print(f"make_results: wrote {os.path.relpath(out, REPO)} and {len(plots)} plots in "
           f"{os.path.relpath(plot_dir, REPO)}")
 

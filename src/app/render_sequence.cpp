@@ -41,6 +41,22 @@ CameraPath resolveCameraPath(const std::string& spec, const Scene& scene) {
     return loadCameraPath(spec);
 }
 
+void checkPathAnimation(const CameraPath& path, const Scene& scene) {
+    if (path.animation.empty() || animationMovesLights(scene, path.animation)) return;
+    for (const CameraAnimationTrack& t : scene.cameraAnimations)
+        if (t.name == path.animation) return;
+    throw UsageError(path.source + ": animation '" + path.animation + "' moves no camera or light of " + scene.path +
+                     " (camera animations: " + describeCameraAnimations(scene) +
+                     "; light animations: " + describeLightAnimations(scene) + ")");
+}
+
+std::string sequenceLightsExplanation(const std::string& animation) {
+    return "lights move with animation '" + animation +
+           "': on each frame they moved, the shadow maps, the direct light, and VCT's injection, bounces and "
+           "radiance mips rerun; the voxels themselves are kept (a clipmap or the sparse backend's grids are "
+           "rebuilt whole); the reference reads the moved lights, its BVH stays";
+}
+
 SequenceFiles sequenceFiles(const std::string& output, int frames) {
     const fs::path out(output);
     SequenceFiles files;
@@ -119,6 +135,7 @@ int runRenderSequence(const RenderOptions& o) {
     Scene scene = loadScene(o.scenePath);
     for (const auto& w : scene.warnings) std::cerr << "vct: warning: " << o.scenePath << ": " << w << '\n';
     const CameraPath path = resolveCameraPath(o.path, scene);
+    checkPathAnimation(path, scene);
     RenderRequest base = makeRenderRequest(o, scene);
     const std::string out = o.output;
     const bool png = out.size() >= 4 && out.substr(out.size() - 4) == ".png";
@@ -143,6 +160,7 @@ int runRenderSequence(const RenderOptions& o) {
         writeTextFileAtomic(files.manifest, manifest.dump(2) + "\n");
     }
 
+    const bool lightsMove = !path.animation.empty() && animationMovesLights(scene, path.animation);
     GlContext::shared(parseGlDevice(o.glDevice));
     RenderSession session(scene);
     const std::vector<double> times = pathFrameTimes(path, o.frames);
@@ -155,7 +173,7 @@ int runRenderSequence(const RenderOptions& o) {
                      "kept (the scene is static along the path); a voxel region fitted to the view "
                      "(vct.region=fit) is rebuilt whole when the view changes it, a clipmap whole when a "
                      "cascade's snapped origin moves\n"
-                  << std::flush;
+                  << (lightsMove ? sequenceLightsExplanation(path.animation) + "\n" : std::string()) << std::flush;
     }
     int kept = 0;
     for (const std::string& f : files.frames) kept += fs::exists(f) ? 1 : 0;
@@ -168,6 +186,10 @@ int runRenderSequence(const RenderOptions& o) {
         const std::string& name = files.frames[size_t(f)];
         removeStaleTemporaries(name);
         if (fs::exists(name)) continue;
+        if (lightsMove) {
+            poseLights(scene, path.animation, times[size_t(f)]);
+            session.lightsChanged();
+        }
         RenderRequest r = base;
         r.camera = cameraOnPath(path, times[size_t(f)], scene);
         r.seed = o.frameSeeds == "fixed" ? base.seed : frameSeed(base.seed, f);

@@ -13,6 +13,11 @@ namespace vct {
 // --path when neither exists.
 CameraPath resolveCameraPath(const std::string& spec, const Scene& scene);
 
+// A path's "animation" must move a camera or a light of the scene; UsageError naming both lists.
+void checkPathAnimation(const CameraPath& path, const Scene& scene);
+// The --explain line for a sequence whose lights move.
+std::string sequenceLightsExplanation(const std::string& animation);
+
 struct SequenceFiles {
     std::vector<std::string> frames;  // NAME_0000.ext, NAME_0001.ext, ...
     std::string manifest;             // NAME.sequence.json

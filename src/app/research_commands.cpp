@@ -113,6 +113,7 @@ int runSequenceCompare(const CompareOptions& o, const Scene& scene, const Compar
     SequenceSettings seq;
     seq.comparison = s;
     seq.path = resolveCameraPath(o.path, scene);
+    checkPathAnimation(seq.path, scene);
     seq.frames = o.frames;
     if (o.frameSeeds != "per-frame" && o.frameSeeds != "fixed")
         throw UsageError("--frame-seeds " + o.frameSeeds + ": expected per-frame or fixed");

@@ -68,6 +68,34 @@ void validateScene(const Scene& scene) {
 
 }  // namespace
 
+namespace {
+
+// The lights as the shaders read them; the shadow pass fills in the shadow fields.
+std::vector<gpu::GpuLight> gpuLights(const Scene& scene) {
+    std::vector<gpu::GpuLight> lights;
+    for (const Light& l : scene.lights) {
+        gpu::GpuLight gl{};
+        gl.color = glm::vec4(l.color, float(int(l.type)));
+        gl.position = glm::vec4(l.position, 1.f);
+        gl.direction = glm::vec4(glm::normalize(l.direction), 0.f);
+        gl.spot = glm::vec4(std::cos(l.outerConeAngle), std::cos(l.innerConeAngle), -1.f, 0.f);
+        gl.shadowClipFromWorld = glm::mat4(1.f);
+        lights.push_back(gl);
+    }
+    return lights;
+}
+
+}  // namespace
+
+void uploadLights(GpuScene& g, const Scene& scene) {
+    if (int(scene.lights.size()) != g.lightCount)
+        throw std::invalid_argument("uploadLights: the scene's light count changed");
+    validateScene(scene);
+    const std::vector<gpu::GpuLight> lights = gpuLights(scene);
+    if (!lights.empty())
+        glNamedBufferSubData(g.lights.id(), 0, GLsizeiptr(lights.size() * sizeof(gpu::GpuLight)), lights.data());
+}
+
 GpuScene uploadScene(const Scene& scene) {
     validateScene(scene);
     GpuScene g;
@@ -117,16 +145,7 @@ GpuScene uploadScene(const Scene& scene) {
     if (materials.empty()) materials.push_back(gpu::GpuMaterial{glm::vec4(0.8f), glm::vec4(0.f), -1, -1, 0, 0.5f});
     g.materials = createBuffer(materials.size() * sizeof(gpu::GpuMaterial), materials.data());
 
-    std::vector<gpu::GpuLight> lights;
-    for (const Light& l : scene.lights) {
-        gpu::GpuLight gl{};
-        gl.color = glm::vec4(l.color, float(int(l.type)));
-        gl.position = glm::vec4(l.position, 1.f);
-        gl.direction = glm::vec4(glm::normalize(l.direction), 0.f);
-        gl.spot = glm::vec4(std::cos(l.outerConeAngle), std::cos(l.innerConeAngle), -1.f, 0.f);
-        gl.shadowClipFromWorld = glm::mat4(1.f);
-        lights.push_back(gl);
-    }
+    const std::vector<gpu::GpuLight> lights = gpuLights(scene);
     g.lights = createBuffer(std::max<size_t>(1, lights.size()) * sizeof(gpu::GpuLight),
                             lights.empty() ? nullptr : lights.data(), GL_DYNAMIC_STORAGE_BIT);
 

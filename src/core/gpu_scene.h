@@ -26,6 +26,9 @@ struct GpuScene {
 };
 
 GpuScene uploadScene(const Scene& scene);
+// Rewrites the light buffer from the scene's lights (the same lights, moved): a sequence whose
+// lights move calls it between frames. The shadow pass must then run again.
+void uploadLights(GpuScene& gpuScene, const Scene& scene);
 // Binds the scene's storage buffers and texture array at their conventional points.
 void bindSceneBuffers(const GpuScene& s);
 

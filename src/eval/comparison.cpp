@@ -77,12 +77,6 @@ std::vector<MethodVariant> parseMethodList(const std::string& text, const std::s
 
 namespace {
 
-Image validMaskFromDepth(const Image& depth) {
-    Image m(depth.width, depth.height, 1);
-    for (size_t i = 0; i < m.pixels.size(); ++i) m.pixels[i] = depth.pixels[i] > 0.f ? 1.f : 0.f;
-    return m;
-}
-
 Image maskAnd(const Image& a, const Image& b, bool negateB) {
     Image m(a.width, a.height, 1);
     for (size_t i = 0; i < m.pixels.size(); ++i) {
@@ -90,13 +84,6 @@ Image maskAnd(const Image& a, const Image& b, bool negateB) {
         m.pixels[i] = (a.pixels[i] > 0.5f && (negateB ? !inB : inB)) ? 1.f : 0.f;
     }
     return m;
-}
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 double rmsOf(const Image& img, const Image& mask) {
@@ -127,15 +114,27 @@ Scene withoutOffscreenOccluders(const Scene& scene) {
     return s;
 }
 
-// Displayable 8-bit versions: AO as stored, radiance through sRGB.
-Image displayable(const Image& img, bool radiance) {
+}  // namespace
+
+Image validMaskFromDepth(const Image& depth) {
+    Image m(depth.width, depth.height, 1);
+    for (size_t i = 0; i < m.pixels.size(); ++i) m.pixels[i] = depth.pixels[i] > 0.f ? 1.f : 0.f;
+    return m;
+}
+
+double medianOf(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+Image displayableEstimate(const Image& img, bool radiance) {
     if (radiance) return toneMapToSrgb(img, 0.f);
     Image out = img;
     for (float& v : out.pixels) v = std::clamp(v, 0.f, 1.f);
     return out;
 }
-
-}  // namespace
 
 void checkComparisonSettings(const ComparisonSettings& s) {
     if (s.variants.empty()) throw UsageError("--methods and --gi name no method to compare");
@@ -193,7 +192,7 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
         if (write) {
             writeImage(path("reference_ao.exr"), refAo, {"ao"});
             writeImage(path("reference_ao_stderr.exr"), refAoStderr, {"ao_stderr"});
-            writeImage(path("reference_ao.png"), displayable(refAo, false));
+            writeImage(path("reference_ao.png"), displayableEstimate(refAo, false));
         }
     }
     const SceneFeatures features = session.features();
@@ -240,7 +239,7 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
         if (write) {
             writeImage(path("reference_gi.exr"), refGi, {"R", "G", "B"});
             writeImage(path("reference_gi_stderr.exr"), refGiStderr, {"indirect_stderr"});
-            writeImage(path("reference_gi.png"), displayable(refGi, true));
+            writeImage(path("reference_gi.png"), displayableEstimate(refGi, true));
         }
         if (features.hasOffscreenOccluders) {
             // The GI ROI: where the reference's indirect light (the mean of its channels, whose
@@ -318,10 +317,10 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
         rec["kind"] = v.kind;
         rec["method"] = v.method;
         rec["params"] = v.params;
-        rec["time_ms"] = median(totals);   // cold: the scene's static data built anew
-        rec["frame_ms"] = median(frames);  // the same runs less what a static scene's next frame reuses
+        rec["time_ms"] = medianOf(totals);   // cold: the scene's static data built anew
+        rec["frame_ms"] = medianOf(frames);  // the same runs less what a static scene's next frame reuses
         nlohmann::json passes = nlohmann::json::object();
-        for (const auto& [name, t] : passTimes) passes[name] = median(t);
+        for (const auto& [name, t] : passTimes) passes[name] = medianOf(t);
         rec["passes"] = passes;
         rec["provenance"] = doc["provenance"];
         rec["provenance"]["params"] =
@@ -355,7 +354,7 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
         if (write && s.writeImages) {
             const std::string stem = v.fileStem();
             writeImage(path(stem + ".exr"), est, isAo ? std::vector<std::string>{"ao"} : std::vector<std::string>{"R", "G", "B"});
-            writeImage(path(stem + ".png"), displayable(est, !isAo));
+            writeImage(path(stem + ".png"), displayableEstimate(est, !isAo));
             const double scale = isAo ? 0.25 : 0.25 * std::max(1e-6, imageMean(truth, &valid, -1));
             writeImage(path(stem + "_error.png"), falseColorError(est, truth, scale, &valid));
             rec["images"] = {{"exr", stem + ".exr"}, {"png", stem + ".png"}, {"error_png", stem + "_error.png"},

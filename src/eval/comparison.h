@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/request.h"
+#include "image/image.h"
 #include "scene/scene.h"
 
 #include <nlohmann/json.hpp>
@@ -49,6 +50,13 @@ void checkComparisonSettings(const ComparisonSettings& settings);
 // top-level scene/camera/resolution/radius/renderer/cores/reference, plus "records".
 // Writes images, results.json and results.csv into outputDir when set.
 nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& settings);
+
+// Pieces a comparison and a sequence comparison share: the valid (non-sky) pixels of a depth
+// AOV, the median of timed runs, and an estimate as an 8-bit figure (AO as stored, radiance
+// through sRGB).
+Image validMaskFromDepth(const Image& depth);
+double medianOf(std::vector<double> values);
+Image displayableEstimate(const Image& image, bool radiance);
 
 // The CSV form of a results document's records (one line per record, header first).
 std::string resultsCsv(const nlohmann::json& results);

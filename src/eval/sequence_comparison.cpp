@@ -7,6 +7,7 @@
 #include "gl/context.h"
 #include "methods/registry.h"
 #include "render/renderer.h"
+#include "scene/gltf_animation.h"
 #include "util/atomic_file.h"
 
 #include <algorithm>
@@ -19,19 +20,6 @@
 namespace vct {
 
 namespace {
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-Image validMask(const Image& depth) {
-    Image m(depth.width, depth.height, 1);
-    for (size_t i = 0; i < m.pixels.size(); ++i) m.pixels[i] = depth.pixels[i] > 0.f ? 1.f : 0.f;
-    return m;
-}
 
 std::string frameName(int frame) {
     char name[32];
@@ -56,13 +44,6 @@ struct VariantTrack {
     nlohmann::json extra, cost;
 };
 
-Image displayable(const Image& img, bool radiance) {
-    if (radiance) return toneMapToSrgb(img, 0.f);
-    Image out = img;
-    for (float& v : out.pixels) v = std::clamp(v, 0.f, 1.f);
-    return out;
-}
-
 }  // namespace
 
 void checkSequenceSettings(const SequenceSettings& s) {
@@ -84,13 +65,16 @@ nlohmann::json runSequenceComparison(const Scene& scene, const SequenceSettings&
         if (!write || !c.writeImages) return;
         const fs::path dir = fs::path(c.outputDir) / "frames" / stem;
         fs::create_directories(dir);
-        writeImage((dir / frameName(frame)).string(), displayable(img, radiance));
+        writeImage((dir / frameName(frame)).string(), displayableEstimate(img, radiance));
     };
     const bool anyAo = std::any_of(c.variants.begin(), c.variants.end(), [](auto& v) { return v.kind == "ao"; });
     const bool anyGi = std::any_of(c.variants.begin(), c.variants.end(), [](auto& v) { return v.kind == "gi"; });
     const std::vector<double> times = pathFrameTimes(s.path, s.frames);
 
-    RenderSession session(scene);
+    // The lights the path's animation moves are posed on a copy the session renders.
+    Scene posed = scene;
+    const bool lightsMove = !s.path.animation.empty() && animationMovesLights(scene, s.path.animation);
+    RenderSession session(posed);
     std::vector<VariantTrack> tracks;
     for (const MethodVariant& v : c.variants) tracks.push_back(VariantTrack{v, {}, {}, {}, {}, {}, 0.0, {}, {}});
     TemporalScore refAoSelf, refGiSelf;
@@ -98,6 +82,10 @@ nlohmann::json runSequenceComparison(const Scene& scene, const SequenceSettings&
     ReferenceFrame previous;
     for (int f = 0; f < s.frames; ++f) {
         say("frame " + std::to_string(f + 1) + "/" + std::to_string(s.frames));
+        if (lightsMove) {
+            poseLights(posed, s.path.animation, times[size_t(f)]);
+            session.lightsChanged();
+        }
         RenderRequest base = c.base;
         base.camera = cameraOnPath(s.path, times[size_t(f)], scene);
         base.seed = frameSeed(c.base.seed, f);
@@ -113,7 +101,7 @@ nlohmann::json runSequenceComparison(const Scene& scene, const SequenceSettings&
         now.depth = rr.aovs.at("depth");
         now.position = rr.aovs.at("position");
         now.normal = rr.aovs.at("normal");
-        now.valid = validMask(now.depth);
+        now.valid = validMaskFromDepth(now.depth);
         if (anyAo) {
             now.ao = rr.aovs.at("ao");
             now.aoStderr = rr.aovs.at("ao_stderr");
@@ -165,7 +153,7 @@ nlohmann::json runSequenceComparison(const Scene& scene, const SequenceSettings&
                     timed.reuseSceneData = false;
                     cold.push_back(session.render(timed).totalMs);
                 }
-                t.coldMs = median(cold);
+                t.coldMs = medianOf(cold);
             } else {
                 const TemporalScore pair = isAo ? scoreFramePair(reprojection, est, t.previous, &now.ao, &previous.ao,
                                                                  &now.aoStderr, &previous.aoStderr)
@@ -199,11 +187,11 @@ nlohmann::json runSequenceComparison(const Scene& scene, const SequenceSettings&
     doc["timing_runs"] = c.timingRuns;
     nlohmann::json refJson = {{"spp", c.referenceSpp}};
     if (anyAo) {
-        refJson["ao_frame_ms"] = median(refAoMs);
+        refJson["ao_frame_ms"] = medianOf(refAoMs);
         refJson["ao_temporal"] = temporalScoreJson(refAoSelf);
     }
     if (anyGi) {
-        refJson["gi_frame_ms"] = median(refGiMs);
+        refJson["gi_frame_ms"] = medianOf(refGiMs);
         refJson["gi_temporal"] = temporalScoreJson(refGiSelf);
     }
     doc["reference"] = refJson;
@@ -220,7 +208,7 @@ nlohmann::json runSequenceComparison(const Scene& scene, const SequenceSettings&
         rec["rmse_mean"] = sum / double(t.rmse.size());
         rec["rmse_worst"] = *std::max_element(t.rmse.begin(), t.rmse.end());
         std::vector<double> steady(t.frameMs.begin() + (t.frameMs.size() > 1 ? 1 : 0), t.frameMs.end());
-        rec["frame_ms"] = median(steady);
+        rec["frame_ms"] = medianOf(steady);
         rec["time_ms"] = t.coldMs;
         rec["temporal"] = temporalScoreJson(t.temporal);
         rec["instability"] = t.temporal.instability();

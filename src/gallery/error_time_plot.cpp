@@ -47,6 +47,11 @@ std::vector<double> logTicks(double lo, double hi) {
     return ticks;
 }
 
+const char* const kPalette[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#8c564b",
+                                "#e377c2", "#17becf", "#bcbd22", "#7f7f7f", "#d62728"};
+
+}  // namespace
+
 std::vector<double> linearTicks(double lo, double hi) {
     const double span = hi - lo;
     const double rough = span / 5;
@@ -62,10 +67,7 @@ std::vector<double> linearTicks(double lo, double hi) {
     return ticks;
 }
 
-const char* kPalette[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#8c564b",
-                          "#e377c2", "#17becf", "#bcbd22", "#7f7f7f", "#d62728"};
-
-}  // namespace
+const char* plotColour(size_t index) { return kPalette[index % std::size(kPalette)]; }
 
 std::string errorTimeSvg(const std::vector<PlotPoint>& all, const PlotStyle& style) {
     std::vector<PlotPoint> points;
@@ -149,7 +151,7 @@ std::string errorTimeSvg(const std::vector<PlotPoint>& all, const PlotStyle& sty
     // Points: colour by group; front points larger, ringed, and labelled.
     std::map<std::string, const char*> colours;
     for (const auto& p : points)
-        if (!colours.count(p.group)) colours[p.group] = kPalette[colours.size() % std::size(kPalette)];
+        if (!colours.count(p.group)) colours[p.group] = plotColour(colours.size());
     for (size_t i = 0; i < points.size(); ++i) {
         const PlotPoint& p = points[i];
         const bool onFront = std::find(front.begin(), front.end(), i) != front.end();

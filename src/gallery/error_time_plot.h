@@ -30,4 +30,10 @@ struct PlotStyle {
 // The SVG element (a string starting with "<svg"), self-contained: no external references.
 std::string errorTimeSvg(const std::vector<PlotPoint>& points, const PlotStyle& style = {});
 
+// Shared by the gallery's plots (frame_plot.cpp too), so they look alike.
+// Round ticks (1, 2 or 5 times a power of ten apart, about five of them) over [lo, hi], hi > lo.
+std::vector<double> linearTicks(double lo, double hi);
+// The colour of group `index` (cycles through ten).
+const char* plotColour(size_t index);
+
 }  // namespace vct

@@ -49,13 +49,16 @@ GallerySummary writeGallery(const GallerySettings& settings) {
     std::vector<SiteCase> cases;
     for (const auto& in : inputs) {
         if (settings.progress) settings.progress("case " + in.id + " from " + in.dir);
-        cases.push_back(buildSiteCase(in, site.string(), settings.thumbnailWidth, summary.imageCount));
+        cases.push_back(
+            in.sequence ? buildSequenceCase(in, site.string(), settings.thumbnailWidth, summary.imageCount)
+                        : buildSiteCase(in, site.string(), settings.thumbnailWidth, summary.imageCount));
     }
     const std::string generated = utcNowString();
     writeText(site / "index.html", indexPage(cases, settings.title, generated));
     summary.pages.push_back("index.html");
     for (const auto& c : cases) {
-        writeText(site / c.page, scenePage(c, cases, generated));
+        writeText(site / c.page,
+                  c.input.sequence ? sequencePage(c, cases, generated) : scenePage(c, cases, generated));
         summary.pages.push_back(c.page);
     }
     summary.caseCount = int(cases.size());

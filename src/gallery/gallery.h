@@ -1,7 +1,9 @@
 // `vct gallery`: a static web site (plain files, no server, no network) over one or more
 // comparison results: an index grid of scenes x methods, one comparison page per case with
 // a slider/flip viewer, synchronized pixel zoom, error maps, the error-against-time plot with
-// its Pareto front, the ROI outline overlay, and the metadata and credits of every result.
+// its Pareto front, the ROI outline overlay, and the metadata and credits of every result;
+// and a sequence page per comparison along a camera path: its frames as a flipbook beside the
+// reference's, per-frame error and instability plots and the sequence's scores.
 #pragma once
 
 #include <functional>
@@ -11,7 +13,7 @@
 namespace vct {
 
 struct GallerySettings {
-    std::vector<std::string> inputs;  // compare dirs or sweep dirs (see findGalleryInputs)
+    std::vector<std::string> inputs;  // compare dirs (also --path ones) or sweep dirs (see findGalleryInputs)
     std::string outputDir;            // the site; created; files in it are overwritten
     std::string title = "vct comparison gallery";
     int thumbnailWidth = 192;  // px, >= 16: index thumbnails are box-downsampled to this

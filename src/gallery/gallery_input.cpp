@@ -59,6 +59,8 @@ std::vector<GalleryInput> findGalleryInputs(const std::vector<std::string>& dirs
         in.dir = dir.string();
         in.results = loadResults(dir / "results.json");
         in.measuredDate = fileTimeString((dir / "results.json").string());
+        in.sequence = isSequenceResults(in.results);
+        if (in.sequence) checkSequenceResults(in.results, in.dir);
         std::string id = fileSafeName(idBase);
         for (int k = 2; usedIds.count(id); ++k) id = fileSafeName(idBase) + "-" + std::to_string(k);
         usedIds.insert(id);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <sstream>
 
@@ -33,57 +34,56 @@ std::vector<double> normalizedRanks(const std::vector<double>& values) {
 
 std::string numAttr(double v) { return std::isfinite(v) ? formatNumber(v, 9) : ""; }
 
-}  // namespace
+using Cases = std::vector<std::reference_wrapper<const SiteCase>>;
 
-std::string indexPage(const std::vector<SiteCase>& cases, const std::string& title,
-                      const std::string& generated) {
-    bool anyGi = false, anyAo = false, anyRoi = false;
-    for (const auto& c : cases)
-        for (const auto& r : c.input.results["records"])
-            (r.value("kind", "ao") == "gi" ? anyGi : anyAo) = true;
-    const bool withKind = anyGi && anyAo;
-    // Columns and their mean ranks (error: rmse; time: time_ms) over the rows that have them.
-    std::vector<Column> columns;
-    std::map<std::string, size_t> columnOf;
-    for (const auto& c : cases) {
-        const auto& records = c.input.results["records"];
-        std::vector<double> err, time;
-        std::vector<size_t> cols;
-        for (const auto& r : records) {
-            const std::string key = recordLabel(r, withKind);
-            if (!columnOf.count(key)) {
-                columnOf[key] = columns.size();
-                columns.push_back({key, 0, 0, 0, int(columns.size())});
-            }
-            cols.push_back(columnOf[key]);
-            err.push_back(jsonNumber(r, "rmse"));
-            time.push_back(jsonNumber(r, "time_ms"));
-        }
-        // Ranks among the records of the same kind: AO and GI errors have different units.
-        for (const char* kind : {"ao", "gi"}) {
-            std::vector<double> kindErr(err.size(), std::nan("")), kindTime(time.size(), std::nan(""));
-            for (size_t i = 0; i < records.size(); ++i)
-                if (records[i].value("kind", "ao") == kind) kindErr[i] = err[i], kindTime[i] = time[i];
-            const auto er = normalizedRanks(kindErr), tr = normalizedRanks(kindTime);
-            for (size_t i = 0; i < cols.size(); ++i) {
-                if (records[i].value("kind", "ao") != kind) continue;
-                Column& col = columns[cols[i]];
-                if (std::isfinite(er[i])) col.errorRankSum += er[i];
-                if (std::isfinite(tr[i])) col.timeRankSum += tr[i];
-                col.rows++;
-            }
-        }
-        if (!c.roiOutline.empty()) anyRoi = true;
-    }
-
+// One tile per sequence (its reference's first frame, linking to its page) and a table of every
+// sequence record: the sequence's own scores, mean and worst RMSE, instability, frame cost.
+std::string sequencesSection(const Cases& sequences) {
+    if (sequences.empty()) return "";
     std::ostringstream s;
-    s << pageHead(title) << "<body class=\"index\">\n<header><h1>" << escapeHtml(title) << "</h1>\n<p>"
-      << cases.size() << " case(s), " << columns.size()
-      << " method variant(s). Each thumbnail links to its comparison page; numbers are the median time per "
-         "frame and the RMSE against the ray-traced reference on valid pixels"
-      << (anyRoi ? " (ROI: RMSE inside the region darkened by off-screen occluders)" : "")
-      << ".</p>\n</header>\n";
+    s << "<section>\n<h2>Sequences</h2>\n<p class=\"small\">Comparisons along a camera path: each page plays "
+         "every method's frames beside the reference's, with per-frame error and temporal instability.</p>\n"
+      << "<div class=\"tiles\">\n";
+    for (const SiteCase& c : sequences) {
+        s << "<figure class=\"tile\"><a href=\"" << encodeUrlPath(c.page) << "\">";
+        if (!c.sequenceThumb.empty())
+            s << "<img src=\"" << encodeUrlPath(c.sequenceThumb) << "\" alt=\"" << escapeHtml(c.input.title)
+              << "\">";
+        s << escapeHtml(c.input.title) << "</a><figcaption>" << c.input.results["frames"].dump()
+          << " frames, " << c.input.results.value("width", 0) << "&times;"
+          << c.input.results.value("height", 0) << "</figcaption></figure>\n";
+    }
+    s << "</div>\n<table class=\"records sortable\" id=\"sequence-records\">\n<thead><tr>"
+      << "<th data-type=\"text\">sequence</th><th data-type=\"text\">kind</th>"
+      << "<th data-type=\"text\">method</th>"
+      << "<th data-type=\"num\">frames</th><th data-type=\"num\">RMSE mean</th><th data-type=\"num\">RMSE "
+         "worst</th><th data-type=\"num\">instability</th><th data-type=\"num\">frame (ms)</th>"
+      << "<th data-type=\"num\">time (ms)</th></tr></thead>\n<tbody>\n";
+    for (const SiteCase& c : sequences) {
+        const auto& records = c.input.results["records"];
+        for (size_t i = 0; i < records.size(); ++i) {
+            const auto& r = records[i];
+            const std::string href =
+                encodeUrlPath(c.page) + (c.recordFrames[i].empty() ? "" : "#rec-" + std::to_string(i));
+            s << "<tr><td><a href=\"" << href << "\">" << escapeHtml(c.input.title) << "</a></td><td>"
+              << escapeHtml(r.value("kind", "ao")) << "</td><td>" << escapeHtml(recordLabel(r, false))
+              << "</td><td class=\"num\" data-value=\"" << c.input.results["frames"].dump() << "\">"
+              << c.input.results["frames"].dump() << "</td>";
+            for (const char* key : {"rmse_mean", "rmse_worst", "instability", "frame_ms", "time_ms"}) {
+                const double v = jsonNumber(r, key);
+                s << "<td class=\"num\" data-value=\"" << numAttr(v) << "\">" << formatNumber(v) << "</td>";
+            }
+            s << "</tr>\n";
+        }
+    }
+    s << "</tbody></table>\n</section>\n";
+    return s.str();
+}
 
+// The scenes x methods grid and the table of every record of the still comparisons.
+std::string stillSections(const Cases& cases, const std::vector<Column>& columns,
+                          std::map<std::string, size_t>& columnOf, bool withKind) {
+    std::ostringstream s;
     // The grid.
     s << "<section>\n<h2>Scenes &times; methods</h2>\n<div class=\"sortbar\">Order method columns by: "
       << "<button type=\"button\" data-order=\"run\" class=\"active\">run order</button> "
@@ -99,7 +99,7 @@ std::string indexPage(const std::vector<SiteCase>& cases, const std::string& tit
           << formatNumber(col.timeRankSum / n, 6) << "\">" << escapeHtml(col.key) << "</th>";
     }
     s << "</tr></thead>\n<tbody>\n";
-    for (const auto& c : cases) {
+    for (const SiteCase& c : cases) {
         const auto& records = c.input.results["records"];
         s << "<tr><th class=\"scene-col\"><a href=\"" << encodeUrlPath(c.page) << "\">"
           << escapeHtml(c.input.title) << "</a>";
@@ -160,7 +160,7 @@ std::string indexPage(const std::vector<SiteCase>& cases, const std::string& tit
          "data-type=\"num\">bias</th>"
       << "<th data-type=\"num\">PSNR (dB)</th><th data-type=\"num\">SSIM</th>"
       << "<th data-type=\"num\">fetches / px</th><th data-type=\"num\">rays / px</th></tr></thead>\n<tbody>\n";
-    for (const auto& c : cases) {
+    for (const SiteCase& c : cases) {
         const auto& records = c.input.results["records"];
         for (size_t i = 0; i < records.size(); ++i) {
             const auto& r = records[i];
@@ -184,8 +184,70 @@ std::string indexPage(const std::vector<SiteCase>& cases, const std::string& tit
         }
     }
     s << "</tbody></table>\n</section>\n";
+    return s.str();
+}
+
+}  // namespace
+
+std::string indexPage(const std::vector<SiteCase>& allCases, const std::string& title,
+                      const std::string& generated) {
+    // Sequences get their own section: their records score frames along a path, not one image.
+    Cases cases, sequences;
+    for (const SiteCase& c : allCases) (c.input.sequence ? sequences : cases).push_back(c);
+    bool anyGi = false, anyAo = false, anyRoi = false;
+    for (const SiteCase& c : cases)
+        for (const auto& r : c.input.results["records"])
+            (r.value("kind", "ao") == "gi" ? anyGi : anyAo) = true;
+    const bool withKind = anyGi && anyAo;
+    // Columns and their mean ranks (error: rmse; time: time_ms) over the rows that have them.
+    std::vector<Column> columns;
+    std::map<std::string, size_t> columnOf;
+    for (const SiteCase& c : cases) {
+        const auto& records = c.input.results["records"];
+        std::vector<double> err, time;
+        std::vector<size_t> cols;
+        for (const auto& r : records) {
+            const std::string key = recordLabel(r, withKind);
+            if (!columnOf.count(key)) {
+                columnOf[key] = columns.size();
+                columns.push_back({key, 0, 0, 0, int(columns.size())});
+            }
+            cols.push_back(columnOf[key]);
+            err.push_back(jsonNumber(r, "rmse"));
+            time.push_back(jsonNumber(r, "time_ms"));
+        }
+        // Ranks among the records of the same kind: AO and GI errors have different units.
+        for (const char* kind : {"ao", "gi"}) {
+            std::vector<double> kindErr(err.size(), std::nan("")), kindTime(time.size(), std::nan(""));
+            for (size_t i = 0; i < records.size(); ++i)
+                if (records[i].value("kind", "ao") == kind) kindErr[i] = err[i], kindTime[i] = time[i];
+            const auto er = normalizedRanks(kindErr), tr = normalizedRanks(kindTime);
+            for (size_t i = 0; i < cols.size(); ++i) {
+                if (records[i].value("kind", "ao") != kind) continue;
+                Column& col = columns[cols[i]];
+                if (std::isfinite(er[i])) col.errorRankSum += er[i];
+                if (std::isfinite(tr[i])) col.timeRankSum += tr[i];
+                col.rows++;
+            }
+        }
+        if (!c.roiOutline.empty()) anyRoi = true;
+    }
+
+    std::ostringstream s;
+    s << pageHead(title) << "<body class=\"index\">\n<header><h1>" << escapeHtml(title) << "</h1>\n<p>";
+    if (!cases.empty())
+        s << cases.size() << " case(s), " << columns.size()
+          << " method variant(s). Each thumbnail links to its comparison page; numbers are the median time "
+             "per frame and the RMSE against the ray-traced reference on valid pixels"
+          << (anyRoi ? " (ROI: RMSE inside the region darkened by off-screen occluders)" : "") << ".";
+    if (!sequences.empty())
+        s << (cases.empty() ? "" : " ") << sequences.size() << " sequence(s) along camera paths (below).";
+    s << "</p>\n</header>\n";
+
+    if (!cases.empty()) s << stillSections(cases, columns, columnOf, withKind);
+    s << sequencesSection(sequences);
     std::vector<const SiteCase*> all;
-    for (const auto& c : cases) all.push_back(&c);
+    for (const SiteCase& c : allCases) all.push_back(&c);
     s << pageFooter(all, generated) << "</body>\n</html>\n";
     return s.str();
 }

@@ -21,13 +21,14 @@ std::string recordLabel(const nlohmann::json& record, bool withKind) {
     return withKind ? record.value("kind", "ao") + ": " + label : label;
 }
 
-std::string pageHead(const std::string& title) {
+std::string pageHead(const std::string& title, const std::string& extraHead) {
     std::ostringstream s;
     s << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       << "<title>" << escapeHtml(title) << "</title>\n"
       << "<link rel=\"stylesheet\" href=\"assets/gallery.css\">\n"
-      << "<script src=\"assets/gallery.js\" defer></script>\n</head>\n";
+      << "<script src=\"assets/gallery.js\" defer></script>\n"
+      << extraHead << "</head>\n";
     return s.str();
 }
 

@@ -5,6 +5,7 @@
 
 #include "gallery/gallery_input.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,12 @@ struct SiteCase {
     std::string roiMask, roiOutline;  // "" when the scene has no off-screen occluders
     std::string legend, validMask;    // "" when absent
     std::vector<std::pair<std::string, std::string>> downloads;  // (label, path): json, csv, EXRs
+    // Sequence cases (input.sequence) only: the frame PNGs, one list per record (empty when the
+    // record wrote no frames) and per reference kind ("ao", "gi"; absent when not compared),
+    // each frames[f] the site path of frame f; and the index thumbnail ("" when no frames).
+    std::vector<std::vector<std::string>> recordFrames;
+    std::map<std::string, std::vector<std::string>> referenceFrames;
+    std::string sequenceThumb;
 
     const SiteImage* image(const std::string& id) const {
         for (const auto& im : images)
@@ -44,8 +51,14 @@ struct SiteCase {
 SiteCase buildSiteCase(const GalleryInput& input, const std::string& siteDir, int thumbnailWidth,
                        int& imageCount);
 
+// Copies one sequence comparison's frames into SITE/data/<id>/frames/ (sequence_files.cpp);
+// the input has passed checkSequenceResults.
+SiteCase buildSequenceCase(const GalleryInput& input, const std::string& siteDir, int thumbnailWidth,
+                           int& imageCount);
+
 // Shared page parts (page_common.cpp).
-std::string pageHead(const std::string& title);
+// `extraHead`: more of <head> (a page's own <style>), written as given.
+std::string pageHead(const std::string& title, const std::string& extraHead = "");
 std::string pageFooter(const std::vector<const SiteCase*>& cases, const std::string& generated);
 std::string recordLabel(const nlohmann::json& record, bool withKind);
 double jsonNumber(const nlohmann::json& j, const char* key);  // NaN when missing or null
@@ -53,5 +66,7 @@ double jsonNumber(const nlohmann::json& j, const char* key);  // NaN when missin
 std::string indexPage(const std::vector<SiteCase>& cases, const std::string& title,
                       const std::string& generated);
 std::string scenePage(const SiteCase& c, const std::vector<SiteCase>& all, const std::string& generated);
+// The page of a sequence case (sequence_page.cpp): flipbooks, per-frame plots, the table.
+std::string sequencePage(const SiteCase& c, const std::vector<SiteCase>& all, const std::string& generated);
 
 }  // namespace vct

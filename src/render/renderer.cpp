@@ -107,6 +107,12 @@ RenderSession::RenderSession(const Scene& scene)
 
 RenderSession::~RenderSession() = default;
 
+void RenderSession::lightsChanged() {
+    uploadLights(mImpl->gpu, mScene);
+    mImpl->shadows.reset();
+    GlContext::shared().checkErrors("lights");
+}
+
 RenderResult RenderSession::render(const RenderRequest& request) {
     if (request.width < 1 || request.height < 1 || request.width > 16384 || request.height > 16384)
         throw UsageError("--size " + std::to_string(request.width) + "x" + std::to_string(request.height) +

@@ -43,6 +43,10 @@ public:
     RenderSession& operator=(const RenderSession&) = delete;
 
     RenderResult render(const RenderRequest& request);
+    // The scene's lights moved (the Scene this session was made with, changed in place by the
+    // caller: scene/gltf_animation.h's poseLights): uploads them and drops the shadow maps; the
+    // methods see new lights through their keys (VCT injects again into the voxels it keeps).
+    void lightsChanged();
     const Scene& scene() const { return mScene; }
     const SceneFeatures& features() const { return mFeatures; }
     // How many times each shared pass actually ran in this session (tests use it to check

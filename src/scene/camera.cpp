@@ -36,6 +36,8 @@ void clipRange(const glm::vec3& eye, const glm::vec3& center, float radius, floa
     *znear = d > radius ? std::max(0.5f * (d - radius), 1e-4f * radius) : 1e-3f * radius;
 }
 
+}  // namespace
+
 bool parseIndex(const std::string& s, size_t* index) {
     if (s.empty() || s.size() > 9) return false;
     for (char c : s)
@@ -43,8 +45,6 @@ bool parseIndex(const std::string& s, size_t* index) {
     *index = size_t(std::stoul(s));
     return true;
 }
-
-}  // namespace
 
 std::string describeCameras(const Scene& scene) {
     if (scene.cameras.empty()) return "(none)";

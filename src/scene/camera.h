@@ -31,6 +31,10 @@ Camera defaultCamera(const Bounds3& bounds, float aspect, float yfovRadians = 0.
 // "x,y,z" -> vec3; throws UsageError on malformed or non-finite input.
 glm::vec3 parseVec3(const std::string& text);
 
+// "12" -> 12; false for anything but a short run of digits, so names like "2b" stay names
+// (cameras and animations are chosen by name or index).
+bool parseIndex(const std::string& s, size_t* index);
+
 // "0 'front', 1 'top'" or "(none)", for error messages.
 std::string describeCameras(const Scene& scene);
 

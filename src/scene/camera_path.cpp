@@ -46,8 +46,8 @@ glm::vec3 keyVelocity(const std::vector<CameraKey>& k, size_t i, glm::vec3 Camer
 CameraPath cameraPathFromJson(const nlohmann::json& doc, const std::string& where) {
     if (!doc.is_object()) fail(where, "expected a JSON object with \"keys\"");
     for (auto it = doc.begin(); it != doc.end(); ++it)
-        if (it.key() != "interpolation" && it.key() != "up" && it.key() != "keys")
-            fail(where, "unknown key \"" + it.key() + "\" (expected interpolation, up, keys)");
+        if (it.key() != "interpolation" && it.key() != "up" && it.key() != "keys" && it.key() != "animation")
+            fail(where, "unknown key \"" + it.key() + "\" (expected interpolation, up, animation, keys)");
     CameraPath path;
     path.source = where;
     if (doc.contains("interpolation")) {
@@ -55,6 +55,11 @@ CameraPath cameraPathFromJson(const nlohmann::json& doc, const std::string& wher
         if (i == "linear") path.interpolation = PathInterpolation::Linear;
         else if (i == "catmull-rom") path.interpolation = PathInterpolation::CatmullRom;
         else fail(where + ": interpolation", "expected \"linear\" or \"catmull-rom\", got " + i.dump());
+    }
+    if (doc.contains("animation")) {
+        if (!doc["animation"].is_string() || doc["animation"].get<std::string>().empty())
+            fail(where + ": animation", "expected the name of a glTF animation of the scene");
+        path.animation = doc["animation"].get<std::string>();
     }
     glm::vec3 up(0.f, 1.f, 0.f);
     if (doc.contains("up")) up = vec3From(doc["up"], where + ": up");
@@ -111,8 +116,10 @@ nlohmann::json cameraPathToJson(const CameraPath& path) {
     for (const CameraKey& k : path.keys)
         keys.push_back({{"time", k.time}, {"eye", vec3Json(k.eye)}, {"target", vec3Json(k.target)},
                         {"up", vec3Json(k.up)}, {"fov", k.fovDeg}});
-    return {{"interpolation", path.interpolation == PathInterpolation::Linear ? "linear" : "catmull-rom"},
-            {"keys", keys}};
+    nlohmann::json doc = {{"interpolation", path.interpolation == PathInterpolation::Linear ? "linear" : "catmull-rom"},
+                          {"keys", keys}};
+    if (!path.animation.empty()) doc["animation"] = path.animation;
+    return doc;
 }
 
 CameraKey interpolateCameraPath(const CameraPath& path, double t) {

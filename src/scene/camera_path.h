@@ -6,6 +6,7 @@
 // The JSON form (every key but "keys" optional):
 //   { "interpolation": "catmull-rom" | "linear",       default catmull-rom
 //     "up": [0, 1, 0],                                  default up of every key
+//     "animation": "NAME",                              a glTF animation of the scene to play along
 //     "keys": [ { "time": 0, "eye": [x, y, z], "target": [x, y, z], "fov": 45, "up": [...] }, ... ] }
 // Times in seconds, strictly increasing; fov is the vertical field of view in degrees, (0, 180),
 // default 45.
@@ -43,6 +44,9 @@ struct CameraPath {
     std::string source;  // the file, or "<scene>: animation 'x'", for messages and records
     PathInterpolation interpolation = PathInterpolation::CatmullRom;
     std::vector<CameraKey> keys;  // at least one, times strictly increasing
+    // A glTF animation of the scene that plays along (it moves the scene's lights; empty: none).
+    // A path file names it with "animation"; a glTF camera animation plays its own.
+    std::string animation;
 
     double startTime() const { return keys.front().time; }
     double endTime() const { return keys.back().time; }

@@ -3,6 +3,8 @@
 // Scene::cameraAnimations; and those tracks listed and turned into camera paths.
 #include "scene/gltf_animation.h"
 
+#include "scene/camera.h"
+
 #include "core/errors.h"  // UsageError, header-only: the scene layer's name lookups use it as camera.cpp does
 #include "scene/gltf_detail.h"
 
@@ -290,7 +292,36 @@ CameraAnimationTrack sampleTrack(const LoadContext& load, int animIndex, const L
     return track;
 }
 
+LightAnimationTrack sampleLightTrack(const LoadContext& load, int animIndex, const LoadContext::PlacedLight& placed,
+                                     const std::vector<TrsChannel>& channels) {
+    const tinygltf::Animation& anim = load.model.animations[size_t(animIndex)];
+    const Light& light = load.scene.lights[placed.sceneLight];
+    LightAnimationTrack track;
+    track.name = anim.name.empty() ? "animation" + std::to_string(animIndex) : anim.name;
+    track.animation = animIndex;
+    track.light = placed.sceneLight;
+    const std::string where = label("animation", animIndex, anim.name) + " (light '" + light.name + "')";
+    for (double t : sampleTimes(channels)) {
+        // As addLight places a static light: at the node's origin, travelling down its -Z.
+        const glm::dmat4 world = worldAt(load, placed.nodeChain, channels, t);
+        const glm::dvec3 position(world[3]);
+        const glm::dvec3 direction = glm::dmat3(world) * glm::dvec3(0.0, 0.0, -1.0);
+        if (!finite3(glm::vec3(position)) || !finite3(glm::vec3(direction)) || !(glm::length(direction) > 0.0))
+            load.fail(where + " at " + num(t) + " s: node transform is not finite or collapses the light direction");
+        track.keys.push_back({t, glm::vec3(position), glm::vec3(glm::normalize(direction))});
+    }
+    return track;
+}
+
 }  // namespace
+
+void addLightAnimations(LoadContext& load) {
+    for (size_t a = 0; a < load.model.animations.size(); ++a)
+        for (const LoadContext::PlacedLight& placed : load.placedLights) {
+            const std::vector<TrsChannel> channels = channelsMoving(load, int(a), placed.nodeChain);
+            if (!channels.empty()) load.scene.lightAnimations.push_back(sampleLightTrack(load, int(a), placed, channels));
+        }
+}
 
 void addCameraAnimations(LoadContext& load) {
     for (size_t a = 0; a < load.model.animations.size(); ++a)
@@ -302,18 +333,47 @@ void addCameraAnimations(LoadContext& load) {
 
 }  // namespace gltf_detail
 
-namespace {
 
-// "12" -> 12; false for anything but a short run of digits, so names like "2b" stay names.
-bool parseIndex(const std::string& s, size_t* index) {
-    if (s.empty() || s.size() > 9) return false;
-    for (char c : s)
-        if (c < '0' || c > '9') return false;
-    *index = size_t(std::stoul(s));
-    return true;
+std::string describeLightAnimations(const Scene& scene) {
+    if (scene.lightAnimations.empty()) return "(none)";
+    std::ostringstream os;
+    for (size_t i = 0; i < scene.lightAnimations.size(); ++i) {
+        const LightAnimationTrack& t = scene.lightAnimations[i];
+        os << (i ? ", " : "") << i << " '" << t.name << "' (light '" << scene.lights[t.light].name << "', "
+           << t.keys.front().time << ".." << t.keys.back().time << " s, " << t.keys.size() << " keys)";
+    }
+    return os.str();
 }
 
-}  // namespace
+bool animationMovesLights(const Scene& scene, const std::string& animation) {
+    for (const LightAnimationTrack& t : scene.lightAnimations)
+        if (t.name == animation) return true;
+    return false;
+}
+
+int poseLights(Scene& scene, const std::string& animation, double t) {
+    int moved = 0;
+    for (const LightAnimationTrack& track : scene.lightAnimations) {
+        if (track.name != animation || track.light >= scene.lights.size()) continue;
+        const std::vector<LightAnimationKey>& k = track.keys;
+        LightAnimationKey at = k.front();
+        if (t >= k.back().time) {
+            at = k.back();
+        } else if (t > k.front().time) {
+            const size_t i = size_t(std::upper_bound(k.begin(), k.end(), t, [](double x, const LightAnimationKey& key) {
+                                        return x < key.time;
+                                    }) - k.begin()) - 1;
+            const float u = float((t - k[i].time) / (k[i + 1].time - k[i].time));
+            at.position = glm::mix(k[i].position, k[i + 1].position, u);
+            const glm::vec3 d = glm::mix(k[i].direction, k[i + 1].direction, u);
+            at.direction = glm::length(d) > 0.f ? glm::normalize(d) : k[i].direction;
+        }
+        scene.lights[track.light].position = at.position;
+        scene.lights[track.light].direction = at.direction;
+        ++moved;
+    }
+    return moved;
+}
 
 std::vector<CameraAnimationInfo> listCameraAnimations(const Scene& scene) {
     std::vector<CameraAnimationInfo> out;
@@ -349,6 +409,7 @@ CameraPath cameraAnimationPath(const Scene& scene, const std::string& nameOrInde
     path.interpolation = PathInterpolation::Linear;  // the keys are dense exact samples (gltf_animation.h)
     for (const CameraAnimationKey& k : found->keys)
         path.keys.push_back({k.time, k.eye, k.target, k.up, glm::degrees(k.yfov)});
+    path.animation = found->name;  // the same animation moves the scene's lights along
     return path;
 }
 

@@ -46,4 +46,14 @@ std::string describeCameraAnimations(const Scene& scene);
 // when there is no such track.
 CameraPath cameraAnimationPath(const Scene& scene, const std::string& nameOrIndex);
 
+// Lights moved by glTF animations (rigid node animation of a light's node or its ancestors),
+// sampled at load time as camera tracks are (Scene::lightAnimations).
+// "0 'sweep' (light 'lamp', 0..2 s, 33 keys)" or "(none)".
+std::string describeLightAnimations(const Scene& scene);
+// True when `animation` (a glTF animation's name) moves a light of the scene.
+bool animationMovesLights(const Scene& scene, const std::string& animation);
+// Places every light that `animation` moves where it is at time t (linear between the dense
+// samples; held at the ends). Returns how many lights it moved; the others keep their pose.
+int poseLights(Scene& scene, const std::string& animation, double t);
+
 }  // namespace vct

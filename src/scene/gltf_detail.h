@@ -42,6 +42,12 @@ struct LoadContext {
         std::vector<int> nodeChain;  // root first, the camera's own node last
     };
     std::vector<PlacedCamera> placedCameras;
+    // The same for each scene light.
+    struct PlacedLight {
+        size_t sceneLight;           // index in Scene::lights
+        std::vector<int> nodeChain;  // root first, the light's own node last
+    };
+    std::vector<PlacedLight> placedLights;
 
     LoadContext(const tinygltf::Model& m, const std::string& p) : model(m), path(p) {}
 
@@ -86,6 +92,8 @@ void boundInfiniteFarPlanes(LoadContext& load);
 // Animations (gltf_animation.cpp): samples every animation that moves a placed camera into
 // Scene::cameraAnimations; the others are neither read nor checked.
 void addCameraAnimations(LoadContext& load);
+// The same for the animations that move a punctual light (Scene::lightAnimations).
+void addLightAnimations(LoadContext& load);
 
 // The node hierarchy (gltf_nodes.cpp).
 std::vector<int> rootNodes(const tinygltf::Model& model);

@@ -66,6 +66,7 @@ Scene sceneFromModel(const tinygltf::Model& model, const std::string& pathForMes
         for (int k = 0; k < 3; ++k) scene.bounds.expand(scene.positions[t[k]]);
     boundInfiniteFarPlanes(load);
     addCameraAnimations(load);
+    addLightAnimations(load);
     return std::move(scene);
 }
 

@@ -86,7 +86,9 @@ void visitNode(LoadContext& load, int nodeIndex, const glm::mat4& worldFromParen
             addPrimitive(load, node.mesh, int(p), worldFromLocal, offscreen);
     }
     load.nodeStack.push_back(nodeIndex);
+    const size_t lightsBefore = load.scene.lights.size();
     addLight(load, node, nodeIndex, worldFromLocal);
+    if (load.scene.lights.size() > lightsBefore) load.placedLights.push_back({lightsBefore, load.nodeStack});
     if (node.camera >= 0) {
         const size_t before = load.scene.cameras.size();
         addCamera(load, node, nodeIndex, worldFromLocal);

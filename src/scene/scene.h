@@ -102,6 +102,21 @@ struct CameraAnimationTrack {
     std::vector<CameraAnimationKey> keys;  // at least one, times strictly increasing
 };
 
+// One instant of a glTF animation of a punctual light, in world space.
+struct LightAnimationKey {
+    double time = 0.0;
+    glm::vec3 position{0.f};
+    glm::vec3 direction{0.f, 0.f, -1.f};  // unit, the direction the light travels
+};
+
+// A glTF animation that moves a light (its node or an ancestor), sampled as camera tracks are.
+struct LightAnimationTrack {
+    std::string name;    // the glTF animation's name, "animation<index>" when it has none
+    int animation = -1;
+    size_t light = 0;    // index in Scene::lights
+    std::vector<LightAnimationKey> keys;  // at least one, times strictly increasing
+};
+
 struct Scene {
     std::string path;  // where it came from (for messages), may be empty
 
@@ -120,6 +135,9 @@ struct Scene {
     // One track per (animation, camera) pair whose animation moves that camera; cameras
     // above hold the unanimated pose.
     std::vector<CameraAnimationTrack> cameraAnimations;
+    // One track per (animation, light) pair whose animation moves that light; lights above hold
+    // the unanimated pose (scene/gltf_animation.h poses them at a time).
+    std::vector<LightAnimationTrack> lightAnimations;
 
     Bounds3 bounds;
     std::vector<std::string> warnings;  // load-time notes (e.g. degenerate triangles dropped)

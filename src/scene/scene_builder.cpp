@@ -313,6 +313,42 @@ int SceneBuilder::addCamera(const std::string& name, const glm::vec3& eye, const
     return node;
 }
 
+void SceneBuilder::addTranslationAnimation(const std::string& name, int node, const std::vector<float>& times,
+                                           const std::vector<glm::vec3>& positions) {
+    if (times.empty() || times.size() != positions.size())
+        throw std::invalid_argument("SceneBuilder::addTranslationAnimation: one position per time");
+    auto floatAccessor = [&](const void* data, size_t count, int type) {
+        tinygltf::Accessor a;
+        a.bufferView = addBufferView(data, count * sizeof(float) * size_t(tinygltf::GetNumComponentsInType(uint32_t(type))), 0);
+        a.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
+        a.type = type;
+        a.count = count;
+        model.accessors.push_back(a);
+        return int(model.accessors.size()) - 1;
+    };
+    const int input = floatAccessor(times.data(), times.size(), TINYGLTF_TYPE_SCALAR);
+    model.accessors[size_t(input)].minValues = {times.front()};
+    model.accessors[size_t(input)].maxValues = {times.back()};
+    const int output = floatAccessor(positions.data(), positions.size(), TINYGLTF_TYPE_VEC3);
+    auto it = std::find_if(model.animations.begin(), model.animations.end(),
+                           [&](const tinygltf::Animation& a) { return a.name == name; });
+    if (it == model.animations.end()) {
+        model.animations.emplace_back();
+        model.animations.back().name = name;
+        it = model.animations.end() - 1;
+    }
+    tinygltf::AnimationSampler sampler;
+    sampler.input = input;
+    sampler.output = output;
+    sampler.interpolation = "LINEAR";
+    it->samplers.push_back(sampler);
+    tinygltf::AnimationChannel channel;
+    channel.sampler = int(it->samplers.size()) - 1;
+    channel.target_node = node;
+    channel.target_path = "translation";
+    it->channels.push_back(channel);
+}
+
 tinygltf::Model SceneBuilder::build() const {
     tinygltf::Model out = model;
     tinygltf::Scene scene;

@@ -77,6 +77,11 @@ class SceneBuilder {
     int addCamera(const std::string& name, const glm::vec3& eye, const glm::vec3& target, float yfovRadians,
                   float znear = 0.05f, float zfar = 200.f, const glm::vec3& up = glm::vec3(0.f, 1.f, 0.f));
 
+    // A LINEAR translation channel on `node` in animation `name` (created on first use): one
+    // position per time (times strictly increasing, seconds).
+    void addTranslationAnimation(const std::string& name, int node, const std::vector<float>& times,
+                                 const std::vector<glm::vec3>& positions);
+
     tinygltf::Model build() const;
     Scene toScene() const;  // sceneFromModel(build(), name())
     // .glb by extension, else .gltf with the buffer embedded as base64; written to a

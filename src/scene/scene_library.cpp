@@ -49,8 +49,9 @@ void addSun(SceneBuilder& b, float intensity = 2.f) {
                           intensity);
 }
 
-SceneBuilder cornellBox() {
-    SceneBuilder b("cornell_box");
+// The Cornell box under `name`; `pointLight` (when given) receives the point light's node.
+SceneBuilder cornellBoxNamed(const std::string& name, int* pointLight) {
+    SceneBuilder b(name);
     const int white = b.addMaterial("white", kWhite);
     const int red = b.addMaterial("red", kRed);
     const int green = b.addMaterial("green", kGreen);
@@ -67,10 +68,23 @@ SceneBuilder cornellBox() {
     // The emitter 2 cm under the ceiling, facing down: cross(+X, +Z) = -Y.
     b.addQuad("ceiling_light", glm::vec3(-0.25f, 1.98f, -0.25f), glm::vec3(0.5f, 0, 0), glm::vec3(0, 0, 0.5f),
               light);
-    b.addPointLight("ceiling_point", glm::vec3(0.f, 1.8f, 0.f), glm::vec3(1.f, 0.85f, 0.6f), 4.f);
+    const int lamp = b.addPointLight("ceiling_point", glm::vec3(0.f, 1.8f, 0.f), glm::vec3(1.f, 0.85f, 0.6f), 4.f);
+    if (pointLight) *pointLight = lamp;
     // The classic camera: 39.3 degrees frames the 2 m opening from 2.9 m in front of it.
     b.addCamera("front", glm::vec3(0.f, 1.f, 3.9f), glm::vec3(0.f, 1.f, 0.f), glm::radians(39.3f), 0.1f,
                 20.f);
+    return b;
+}
+
+SceneBuilder cornellBox() { return cornellBoxNamed("cornell_box", nullptr); }
+
+// The box with its point light sweeping under the ceiling, left to right, dipping at the middle
+// (animation light_sweep, 0..2 s): a light that moves while the geometry stands.
+SceneBuilder cornellMovingLight() {
+    int lamp = -1;
+    SceneBuilder b = cornellBoxNamed("cornell_moving_light", &lamp);
+    b.addTranslationAnimation("light_sweep", lamp, {0.f, 1.f, 2.f},
+                              {glm::vec3(-0.55f, 1.75f, -0.4f), glm::vec3(0.f, 1.6f, 0.2f), glm::vec3(0.55f, 1.75f, -0.4f)});
     return b;
 }
 
@@ -284,6 +298,7 @@ SceneBuilder wallBase() {
 const std::vector<std::pair<std::string, std::function<SceneBuilder()>>>& registry() {
     static const std::vector<std::pair<std::string, std::function<SceneBuilder()>>> scenes = {
         {"cornell_box", cornellBox},
+        {"cornell_moving_light", cornellMovingLight},
         {"default", courtyard},
         {"offscreen_overhang", offscreenOverhang},
         {"offscreen_wall_behind", offscreenWallBehind},

@@ -19,7 +19,9 @@ SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache, const 
     SparseBuildOptions options;
     options.region = region.bounds;
     options.anisotropic = cone.anisotropic;
-    const std::string key = voxelGridKey(r, inject, options.anisotropic) + ";region=" + boundsKey(region.bounds);
+    // Lights that move rebuild the sparse grids whole (they are built and lit in one pass).
+    const std::string key = voxelGridKey(r, inject, options.anisotropic) + ";region=" + boundsKey(region.bounds) +
+                            (inject ? ";lights=" + lightsKey(ctx.scene) : std::string());
     // A camera path with a view-fitted region asks for new grids as it moves: keep a few.
     if (!cache.grids.count(key) && cache.grids.size() >= kMaxCachedVolumes) cache.grids.clear();
     auto& slot = cache.grids[key];

@@ -7,6 +7,7 @@
 #include "voxelize/voxelize.h"
 
 #include <algorithm>
+#include <sstream>
 
 namespace vct {
 
@@ -63,6 +64,36 @@ void keepBounded(std::map<std::string, std::shared_ptr<T>>& map, std::deque<std:
 
 }  // namespace
 
+namespace {
+
+// What follows voxelization on the dense path: radiance injected and bounced (when lit), then
+// the mips. Also what a moved light reruns on voxels it keeps.
+void lightAndFilter(MethodContext& ctx, VoxelGrid& grid, const ConeSettings& cone, bool inject, bool aniso) {
+    GlContext& gl = GlContext::shared();
+    if (inject) {
+        injectRadiance(grid, ctx.gpu, ctx.scene, ctx.request.params, ctx.timer);
+        gl.checkErrors("inject");
+        ctx.runCounts["inject"]++;
+        traceVoxelBounces(grid, ctx.request.sky, cone, ctx.request.params, ctx.timer);
+        gl.checkErrors("bounce");
+    }
+    buildMips(grid, aniso, ctx.timer);
+    gl.checkErrors("mips");
+    ctx.runCounts["mips"]++;
+}
+
+}  // namespace
+
+std::string lightsKey(const Scene& scene) {
+    std::ostringstream k;
+    k << std::hexfloat;
+    for (const Light& l : scene.lights)
+        k << int(l.type) << ':' << l.position.x << ',' << l.position.y << ',' << l.position.z << ':' << l.direction.x
+          << ',' << l.direction.y << ',' << l.direction.z << ':' << l.color.x << ',' << l.color.y << ',' << l.color.z
+          << ';';
+    return k.str();
+}
+
 VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVolumeCache& cache) {
     const RenderRequest& r = ctx.request;
     const bool inject = ctx.plan.runs(kPassInject);
@@ -80,7 +111,10 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
         key += ";clipmap=" + std::to_string(levels);
         for (const glm::ivec3& o : layout.originIndex)
             key += "@" + std::to_string(o.x) + "," + std::to_string(o.y) + "," + std::to_string(o.z);
+        // Lights that move rebuild a clipmap whole (its levels inject through each other).
+        if (inject) key += ";lights=" + lightsKey(ctx.scene);
     }
+    const std::string lights = inject ? lightsKey(ctx.scene) : std::string();
     VoxelVolume v;
     if (r.reuseSceneData) {
         if (levels > 0) {
@@ -106,17 +140,16 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
         v.grid = std::make_shared<VoxelGrid>(voxelizeScene(ctx.gpu, region.bounds, r.voxelRes, r.params, ctx.timer));
         gl.checkErrors("voxelize");
         ctx.runCounts["voxelize"]++;
-        if (inject) {
-            injectRadiance(*v.grid, ctx.gpu, ctx.scene, r.params, ctx.timer);
-            gl.checkErrors("inject");
-            ctx.runCounts["inject"]++;
-            traceVoxelBounces(*v.grid, r.sky, cone, r.params, ctx.timer);
-            gl.checkErrors("bounce");
+        lightAndFilter(ctx, *v.grid, cone, inject, aniso);
+        if (r.reuseSceneData) {
+            keepBounded(cache.grids, cache.order, key, v.grid);
+            cache.litBy[key] = lights;
         }
-        buildMips(*v.grid, aniso, ctx.timer);
-        gl.checkErrors("mips");
-        ctx.runCounts["mips"]++;
-        if (r.reuseSceneData) keepBounded(cache.grids, cache.order, key, v.grid);
+    } else if (levels == 0 && inject && cache.litBy[key] != lights) {
+        // The lights moved, the geometry did not: the voxels stay, their radiance is injected
+        // and bounced anew and its mips rebuilt (the opacity's come out the same).
+        lightAndFilter(ctx, *v.grid, cone, true, aniso);
+        cache.litBy[key] = lights;
     }
     if (!inject && ctx.plan.runs(kPassConeGi)) {
         if (v.clipmap)

@@ -31,7 +31,12 @@ struct VoxelVolumeCache {
     std::map<std::string, std::shared_ptr<VoxelGrid>> grids;
     std::map<std::string, std::shared_ptr<Clipmap>> clipmaps;
     std::deque<std::string> order;  // keys of both maps, oldest first
+    std::map<std::string, std::string> litBy;  // grid key -> lightsKey of the radiance it holds
 };
+
+// The scene's lights as a key (type, position, direction, colour, exactly): radiance injected
+// under one key is stale under another.
+std::string lightsKey(const Scene& scene);
 
 // A key of everything a grid depends on: two requests with the same key share one grid.
 std::string voxelGridKey(const RenderRequest& request, bool inject, bool aniso);

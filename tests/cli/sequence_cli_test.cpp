@@ -103,6 +103,13 @@ TEST(SequenceCli, BadPathsAreClearErrorsBeforeAnyOutput) {
     auto anim = runVct("render " + kScene + " --size 16 --path gltf:nothing --frames 2 -o " + dir + "/f.png");
     EXPECT_EQ(anim.exitCode, 2) << anim.output;
     EXPECT_NE(anim.output.find("nothing"), std::string::npos) << anim.output;
+    // A path that names an animation the scene does not have.
+    const std::string named = dir + "/named.json";
+    std::ofstream(named) << R"({"animation": "nope", "keys": [{"time": 0, "eye": [0, 1, 3], "target": [0, 0, 0]}]})";
+    auto nope = runVct("render " + kScene + " --size 16 --path " + named + " --frames 2 -o " + dir + "/n/f.png");
+    EXPECT_EQ(nope.exitCode, 2) << nope.output;
+    EXPECT_NE(nope.output.find("animation 'nope' moves no camera or light"), std::string::npos) << nope.output;
+    EXPECT_FALSE(fs::exists(dir + "/n"));
 }
 
 TEST(SequenceCli, CompareAlongAPathWritesPerFrameRecords) {
@@ -123,4 +130,16 @@ TEST(SequenceCli, CompareAlongAPathWritesPerFrameRecords) {
     }
     EXPECT_TRUE(fs::exists(dir + "/out/frames/reference_ao/0000.png"));
     EXPECT_TRUE(fs::exists(dir + "/out/results.csv"));
+}
+
+TEST(SequenceCli, AMovingLightRerunsInjectionOnlyAndThePlanSaysSo) {
+    const std::string dir = freshTempDir("seq_light");
+    auto r = runVct("render scenes/cornell_moving_light.gltf --size 24 --gi vct --voxel-res 16 --sky 0 --explain "
+                    "--path scenes/paths/cornell_light_sweep.json --frames 3 --stats " + dir + "/s.json -o " + dir +
+                    "/f.png");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("lights move with animation 'light_sweep'"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("the voxels themselves are kept"), std::string::npos) << r.output;
+    // The light moves: the frames differ.
+    EXPECT_NE(bytesOf(dir + "/f_0000.png"), bytesOf(dir + "/f_0002.png"));
 }

@@ -29,12 +29,14 @@ struct AnimatedModel {
     tinygltf::Model model;
     int cameraNode = -1;
     int boxNode = -1;
+    int lampNode = -1;
 
     AnimatedModel() {
         vct::SceneBuilder b("anim");
         const int grey = b.addMaterial("grey", glm::vec3(0.5f));
         boxNode = b.addBox("box", glm::vec3(-1.f), glm::vec3(1.f), grey);
         cameraNode = b.addCamera("cam", glm::vec3(0.f, 0.f, 5.f), glm::vec3(0.f), kYfov);
+        lampNode = b.addPointLight("lamp", glm::vec3(0.f, 3.f, 0.f), glm::vec3(1.f), 10.f);
         model = b.build();
     }
 
@@ -354,4 +356,26 @@ TEST(GltfAnimation, UnknownPathNamesTheAvailableOnes) {
             EXPECT_NE(msg.find("0 'slide' (camera 'cam', 0..2 s, 17 keys)"), std::string::npos) << msg;
         }
     }
+}
+
+// Lights: a translation channel on the lamp's node becomes a light track, which poses the light
+// at any time (linear between the dense samples, held at the ends); its own animation moves no
+// camera, so it is no camera path.
+TEST(GltfAnimation, ALightsNodeAnimationPosesTheLight) {
+    AnimatedModel m;
+    m.animate("sweep", m.lampNode, "translation", {0.f, 2.f}, {-2.f, 3.f, 0.f, 2.f, 3.f, 0.f});
+    Scene s = m.load();
+    ASSERT_EQ(s.lightAnimations.size(), 1u);
+    EXPECT_TRUE(s.cameraAnimations.empty());
+    EXPECT_EQ(s.lightAnimations[0].name, "sweep");
+    EXPECT_TRUE(vct::animationMovesLights(s, "sweep"));
+    EXPECT_FALSE(vct::animationMovesLights(s, "other"));
+    EXPECT_NE(vct::describeLightAnimations(s).find("'sweep' (light 'lamp', 0..2 s"), std::string::npos)
+        << vct::describeLightAnimations(s);
+    EXPECT_EQ(vct::poseLights(s, "sweep", 0.5), 1);
+    expectNear(s.lights[0].position, glm::vec3(-1.f, 3.f, 0.f));
+    EXPECT_EQ(vct::poseLights(s, "sweep", 9.0), 1);
+    expectNear(s.lights[0].position, glm::vec3(2.f, 3.f, 0.f));
+    EXPECT_EQ(vct::poseLights(s, "other", 1.0), 0);
+    expectNear(s.lights[0].position, glm::vec3(2.f, 3.f, 0.f));
 }

@@ -60,9 +60,10 @@ TEST(FrameCost, WhatTheNextFrameReusesIsWhatFrameMsLeavesOut) {
         double staticMs = 0.0;
         std::set<std::string> staticPasses;
         for (const PassTiming& p : cold.passes) {
-            if (!warmPasses.count(p.name))
+            if (!warmPasses.count(p.name)) {
                 EXPECT_EQ(p.reruns, Reruns::WhenSceneChanges)
                     << ao << "/" << gi << ": " << p.name << " was reused by the next frame but counts in frame_ms";
+            }
             if (p.reruns == Reruns::WhenSceneChanges) {
                 staticMs += p.wallMs;
                 staticPasses.insert(p.name);
@@ -72,10 +73,13 @@ TEST(FrameCost, WhatTheNextFrameReusesIsWhatFrameMsLeavesOut) {
             EXPECT_TRUE(warmPasses.count(name)) << ao << "/" << gi << ": " << name << " is per-frame but did not rerun";
         EXPECT_GT(cold.frameMs, 0.0);
         EXPECT_NEAR(cold.frameMs, cold.totalMs - staticMs, 1e-9);
-        if (ao == "vct" || ao == "reference") EXPECT_GT(staticMs, 0.0) << ao << ": voxels or a BVH were built";
-        if (ao == "gtao")
+        if (ao == "vct" || ao == "reference") {
+            EXPECT_GT(staticMs, 0.0) << ao << ": voxels or a BVH were built";
+        }
+        if (ao == "gtao") {
             for (const std::string& name : staticPasses)
                 EXPECT_EQ(name, "shadow") << "screen-space AO has no static data but the direct light's shadow map";
+        }
     }
 }
 
