@@ -125,8 +125,9 @@ def markdown(cases, plots, docs_dir, command):
             if t:
                 verdict = ("zero within its resolution: the reprojection leaves only noise"
                            if t["instability"] <= t["resolution"] else
-                           "above its resolution: the scene itself changes (a light moves), "
-                           "or the reprojection leaves more than noise")
+                           "above its resolution: the scene itself changes (a light moves), or the bilinear "
+                           "reading of the previous frame blurs detail finer than a pixel; that is the floor "
+                           "under which a method's instability is not flicker")
                 L.append(f"Reference {kind.upper()}: its own instability {fmt(t['instability'])} "
                          f"(resolution {fmt(t['resolution'])}; its raw change {fmt(t['change_rms'])} against its "
                          f"noise {fmt(t['reference_noise_rms'])}), {verdict}.  ")

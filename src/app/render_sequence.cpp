@@ -42,7 +42,12 @@ CameraPath resolveCameraPath(const std::string& spec, const Scene& scene) {
 }
 
 void checkPathAnimation(const CameraPath& path, const Scene& scene) {
-    if (path.animation.empty() || animationMovesLights(scene, path.animation)) return;
+    if (path.animation.empty()) return;
+    for (const auto& [name, what] : scene.geometryAnimations)
+        if (name == path.animation)
+            throw UsageError(path.source + ": animation '" + name + "' " + what +
+                             ": a sequence moves cameras and lights only (the scene's geometry stands still)");
+    if (animationMovesLights(scene, path.animation)) return;
     for (const CameraAnimationTrack& t : scene.cameraAnimations)
         if (t.name == path.animation) return;
     throw UsageError(path.source + ": animation '" + path.animation + "' moves no camera or light of " + scene.path +

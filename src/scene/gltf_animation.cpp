@@ -315,6 +315,39 @@ LightAnimationTrack sampleLightTrack(const LoadContext& load, int animIndex, con
 
 }  // namespace
 
+namespace {
+
+// True when node `index` or a node below it carries a mesh (depth-limited against cycles, which
+// visitNode has already refused for the nodes of the scene).
+bool carriesGeometry(const tinygltf::Model& model, int index, size_t depth) {
+    if (index < 0 || index >= int(model.nodes.size()) || depth > model.nodes.size()) return false;
+    const tinygltf::Node& node = model.nodes[size_t(index)];
+    if (node.mesh >= 0 || node.skin >= 0) return true;
+    for (int child : node.children)
+        if (carriesGeometry(model, child, depth + 1)) return true;
+    return false;
+}
+
+}  // namespace
+
+void findGeometryAnimations(LoadContext& load) {
+    const tinygltf::Model& model = load.model;
+    for (size_t a = 0; a < model.animations.size(); ++a) {
+        const tinygltf::Animation& anim = model.animations[a];
+        const std::string name = anim.name.empty() ? "animation" + std::to_string(a) : anim.name;
+        for (const tinygltf::AnimationChannel& ch : anim.channels) {
+            if (ch.target_node < 0 || ch.target_node >= int(model.nodes.size())) continue;
+            const tinygltf::Node& node = model.nodes[size_t(ch.target_node)];
+            std::string what;
+            if (ch.target_path == "weights") what = "animates the morph target weights of " + label("node", ch.target_node, node.name);
+            else if (carriesGeometry(model, ch.target_node, 0)) what = "moves " + label("node", ch.target_node, node.name) + ", which carries a mesh or skin";
+            if (what.empty()) continue;
+            load.scene.geometryAnimations.push_back({name, what});
+            break;
+        }
+    }
+}
+
 void addLightAnimations(LoadContext& load) {
     for (size_t a = 0; a < load.model.animations.size(); ++a)
         for (const LoadContext::PlacedLight& placed : load.placedLights) {

@@ -94,6 +94,8 @@ void boundInfiniteFarPlanes(LoadContext& load);
 void addCameraAnimations(LoadContext& load);
 // The same for the animations that move a punctual light (Scene::lightAnimations).
 void addLightAnimations(LoadContext& load);
+// Names the animations that move geometry (Scene::geometryAnimations), without reading their samplers.
+void findGeometryAnimations(LoadContext& load);
 
 // The node hierarchy (gltf_nodes.cpp).
 std::vector<int> rootNodes(const tinygltf::Model& model);

@@ -138,6 +138,10 @@ struct Scene {
     // One track per (animation, light) pair whose animation moves that light; lights above hold
     // the unanimated pose (scene/gltf_animation.h poses them at a time).
     std::vector<LightAnimationTrack> lightAnimations;
+    // Animations that would move geometry (a mesh node or its ancestor, a skin, morph target
+    // weights), by name, with what they move: sequences refuse to play them, since the scene's
+    // triangles stand still along a path.
+    std::vector<std::pair<std::string, std::string>> geometryAnimations;
 
     Bounds3 bounds;
     std::vector<std::string> warnings;  // load-time notes (e.g. degenerate triangles dropped)

@@ -379,3 +379,15 @@ TEST(GltfAnimation, ALightsNodeAnimationPosesTheLight) {
     EXPECT_EQ(vct::poseLights(s, "other", 1.0), 0);
     expectNear(s.lights[0].position, glm::vec3(2.f, 3.f, 0.f));
 }
+
+// Animations of geometry are named with what they move, so a sequence can refuse them.
+TEST(GltfAnimation, AnimationsThatMoveGeometryAreNamed) {
+    AnimatedModel m;
+    m.animate("slide", m.boxNode, "translation", {0.f, 1.f}, {0.f, 0.f, 0.f, 1.f, 0.f, 0.f});
+    m.animate("sweep", m.lampNode, "translation", {0.f, 1.f}, {0.f, 3.f, 0.f, 1.f, 3.f, 0.f});
+    const Scene s = m.load();
+    ASSERT_EQ(s.geometryAnimations.size(), 1u);
+    EXPECT_EQ(s.geometryAnimations[0].first, "slide");
+    EXPECT_NE(s.geometryAnimations[0].second.find("'box', which carries a mesh"), std::string::npos)
+        << s.geometryAnimations[0].second;
+}
