@@ -116,6 +116,14 @@ Scene withoutOffscreenOccluders(const Scene& scene) {
 
 }  // namespace
 
+RenderRequest variantRequest(const RenderRequest& base, const MethodVariant& v) {
+    RenderRequest req = base;
+    for (const auto& [k, val] : v.params) req.params.set(k, val);
+    if (v.kind == "ao") { req.ao = v.method; req.gi = kNoMethod; req.aovs = {"ao"}; }
+    else { req.ao = kNoMethod; req.gi = v.method; req.aovs = {"indirect"}; }
+    return req;
+}
+
 Image validMaskFromDepth(const Image& depth) {
     Image m(depth.width, depth.height, 1);
     for (size_t i = 0; i < m.pixels.size(); ++i) m.pixels[i] = depth.pixels[i] > 0.f ? 1.f : 0.f;
@@ -287,10 +295,7 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
     doc["records"] = nlohmann::json::array();
     for (const MethodVariant& v : s.variants) {
         say(v.kind + " " + v.label());
-        RenderRequest req = s.base;
-        for (const auto& [k, val] : v.params) req.params.set(k, val);
-        if (v.kind == "ao") { req.ao = v.method; req.gi = kNoMethod; req.aovs = {"ao"}; }
-        else { req.ao = kNoMethod; req.gi = v.method; req.aovs = {"indirect"}; }
+        const RenderRequest req = variantRequest(s.base, v);
         RenderResult first = session.render(req);  // warm-up; its image is the one scored
         std::vector<double> totals, frames;
         std::map<std::string, std::vector<double>> passTimes;

@@ -55,6 +55,9 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& setti
 // AOV, the median of timed runs, and an estimate as an 8-bit figure (AO as stored, radiance
 // through sRGB).
 Image validMaskFromDepth(const Image& depth);
+// `base` set up to render variant `v`: its method as --ao or --gi, its parameters over the shared
+// ones, and its one scored AOV (ao, or indirect).
+RenderRequest variantRequest(const RenderRequest& base, const MethodVariant& v);
 double medianOf(std::vector<double> values);
 Image displayableEstimate(const Image& image, bool radiance);
 

@@ -133,11 +133,8 @@ nlohmann::json runSequenceComparison(const Scene& scene, const SequenceSettings&
         }
         for (VariantTrack& t : tracks) {
             const bool isAo = t.variant.kind == "ao";
-            RenderRequest req = base;
+            RenderRequest req = variantRequest(base, t.variant);
             if (!s.perFrameSeeds) req.seed = c.base.seed;
-            for (const auto& [k, val] : t.variant.params) req.params.set(k, val);
-            if (isAo) { req.ao = t.variant.method; req.gi = kNoMethod; req.aovs = {"ao"}; }
-            else { req.ao = kNoMethod; req.gi = t.variant.method; req.aovs = {"indirect"}; }
             RenderResult r = session.render(req);
             const Image& est = r.aovs.at(isAo ? "ao" : "indirect");
             t.rmse.push_back(computeErrorMetrics(est, isAo ? now.ao : now.gi, &now.valid).rmse);
@@ -215,8 +212,7 @@ nlohmann::json runSequenceComparison(const Scene& scene, const SequenceSettings&
         rec["per_frame"] = {{"rmse", t.rmse}, {"frame_ms", t.frameMs}, {"instability", t.instability}};
         rec["cost"] = t.cost;
         rec["extra"] = t.extra;
-        RenderRequest req = c.base;
-        for (const auto& [k, val] : t.variant.params) req.params.set(k, val);
+        const RenderRequest req = variantRequest(c.base, t.variant);
         rec["provenance"] = doc["provenance"];
         rec["provenance"]["params"] =
             resolvedParams(isAo ? MethodKind::AO : MethodKind::GI, t.variant.method, req.params);

@@ -104,6 +104,7 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
     std::string key = voxelGridKey(r, inject, aniso) + ";region=" + boundsKey(region.bounds);
     // A clipmap is its layout: the cascades' origins snap to their voxels, so a camera moving
     // less than a snap step keeps the same cascades (the same voxels), a larger move builds new ones.
+    const std::string lights = inject ? lightsKey(ctx.scene) : std::string();
     ClipmapLayout layout;
     if (levels > 0) {
         layout = computeClipmapLayout(region.bounds, clipmapFocus(region.bounds, r.camera, levels, r.voxelRes), levels,
@@ -112,9 +113,8 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
         for (const glm::ivec3& o : layout.originIndex)
             key += "@" + std::to_string(o.x) + "," + std::to_string(o.y) + "," + std::to_string(o.z);
         // Lights that move rebuild a clipmap whole (its levels inject through each other).
-        if (inject) key += ";lights=" + lightsKey(ctx.scene);
+        if (inject) key += ";lights=" + lights;
     }
-    const std::string lights = inject ? lightsKey(ctx.scene) : std::string();
     VoxelVolume v;
     if (r.reuseSceneData) {
         if (levels > 0) {
