@@ -6,8 +6,8 @@ Used by scripts/make_results.py (`make results`); on its own:
     python3 scripts/sequence_study.py [--vct build/vct] [--spec sweeps/sequences.json]
                                       [--work out/results-study/sequences] [--resume]
 
-prints the markdown section. Each case runs into WORK/<id> (kept with --resume when its
-results.json exists); cases whose scene is absent (${shared} scenes) are listed as skipped.
+prints the markdown section. Each case runs into WORK/<id>/{ao,gi} (with --resume, a kind whose
+results.json holds the methods asked for is kept); cases whose scene is absent (${shared} scenes) are listed as skipped.
 """
 import argparse
 import json
@@ -24,6 +24,15 @@ def scene_path(p):
     return p.replace("${shared}", SHARED)
 
 
+def done(results, methods):
+    """True when a kind's results.json exists and holds exactly the methods asked for."""
+    if not os.path.exists(results):
+        return False
+    with open(results) as f:
+        doc = json.load(f)
+    return [r["method"] for r in doc["records"]] == methods.split(",")
+
+
 def run_cases(vct, spec, work, resume):
     """[(case, results document or None, why skipped)]"""
     out = []
@@ -34,19 +43,23 @@ def run_cases(vct, spec, work, resume):
             continue
         dest = os.path.join(work, case["id"])
         results = os.path.join(dest, "results.json")
-        if not (resume and os.path.exists(results)):
-            for kind, methods in (("ao", case.get("ao", spec["ao"])), ("gi", case.get("gi", spec["gi"]))):
-                if not methods:
-                    continue
-                cmd = [vct, "compare", scene, "--size", case.get("size", spec["size"]),
-                       "--path", case["path"], "--frames", str(case["frames"]),
-                       "--ref-spp", str(case.get("ref_spp", spec["ref_spp"])), "--runs", str(spec.get("runs", 1)),
-                       "--radius", str(case.get("radius", 1.0)), "--voxel-res", str(case.get("voxel_res", 128)),
-                       "--sky", str(case.get("sky", 1.0)), "-o", os.path.join(dest, kind)]
-                cmd += ["--methods", methods] if kind == "ao" else ["--methods", "", "--gi", methods]
-                print("+ " + " ".join(cmd), flush=True)
-                if subprocess.run(cmd, cwd=REPO).returncode != 0:
-                    sys.exit(f"sequence_study: {case['id']} ({kind}) failed")
+        ran = False
+        for kind, methods in (("ao", case.get("ao", spec["ao"])), ("gi", case.get("gi", spec["gi"]))):
+            if not methods:
+                continue
+            if resume and done(os.path.join(dest, kind, "results.json"), methods):
+                continue
+            ran = True
+            cmd = [vct, "compare", scene, "--size", case.get("size", spec["size"]),
+                   "--path", case["path"], "--frames", str(case["frames"]),
+                   "--ref-spp", str(case.get("ref_spp", spec["ref_spp"])), "--runs", str(spec.get("runs", 1)),
+                   "--radius", str(case.get("radius", 1.0)), "--voxel-res", str(case.get("voxel_res", 128)),
+                   "--sky", str(case.get("sky", 1.0)), "-o", os.path.join(dest, kind)]
+            cmd += ["--methods", methods] if kind == "ao" else ["--methods", "", "--gi", methods]
+            print("+ " + " ".join(cmd), flush=True)
+            if subprocess.run(cmd, cwd=REPO).returncode != 0:
+                sys.exit(f"sequence_study: {case['id']} ({kind}) failed")
+        if ran or not os.path.exists(results):
             merged = None
             for kind in ("ao", "gi"):
                 p = os.path.join(dest, kind, "results.json")
@@ -125,7 +138,7 @@ def markdown(cases, plots, docs_dir, command):
             if t:
                 verdict = ("zero within its resolution: the reprojection leaves only noise"
                            if t["instability"] <= t["resolution"] else
-                           "above its resolution: the scene itself changes (a light moves), or the bilinear "
+                           "above its resolution: the scene itself changes (a light or an object moves), or the bilinear "
                            "reading of the previous frame blurs detail finer than a pixel; that is the floor "
                            "under which a method's instability is not flicker")
                 L.append(f"Reference {kind.upper()}: its own instability {fmt(t['instability'])} "

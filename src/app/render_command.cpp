@@ -173,7 +173,8 @@ int runInfo(const std::string& scenePath, const std::string& glDevice) {
               << scene.bounds.max.x << ", " << scene.bounds.max.y << ", " << scene.bounds.max.z << ")\n"
               << "cameras: " << describeCameras(scene) << "\n"
               << "camera animations: " << describeCameraAnimations(scene) << "\n"
-              << "light animations: " << describeLightAnimations(scene) << "\n";
+              << "light animations: " << describeLightAnimations(scene) << "\n"
+              << "object animations: " << describeMeshAnimations(scene) << "\n";
     for (const auto& l : scene.lights)
         std::cout << "light '" << l.name << "': " << (l.type == LightType::Directional ? "directional" :
                                                       l.type == LightType::Point ? "point" : "spot")

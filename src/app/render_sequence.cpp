@@ -41,25 +41,20 @@ CameraPath resolveCameraPath(const std::string& spec, const Scene& scene) {
     return loadCameraPath(spec);
 }
 
-void checkPathAnimation(const CameraPath& path, const Scene& scene) {
-    if (path.animation.empty()) return;
-    for (const auto& [name, what] : scene.geometryAnimations)
-        if (name == path.animation)
-            throw UsageError(path.source + ": animation '" + name + "' " + what +
-                             ": a sequence moves cameras and lights only (the scene's geometry stands still)");
-    if (animationMovesLights(scene, path.animation)) return;
-    for (const CameraAnimationTrack& t : scene.cameraAnimations)
-        if (t.name == path.animation) return;
-    throw UsageError(path.source + ": animation '" + path.animation + "' moves no camera or light of " + scene.path +
-                     " (camera animations: " + describeCameraAnimations(scene) +
-                     "; light animations: " + describeLightAnimations(scene) + ")");
-}
-
 std::string sequenceLightsExplanation(const std::string& animation) {
     return "lights move with animation '" + animation +
            "': on each frame they moved, the shadow maps, the direct light, and VCT's injection, bounces and "
            "radiance mips rerun; the voxels themselves are kept (a clipmap or the sparse backend's grids are "
            "rebuilt whole); the reference reads the moved lights, its BVH stays";
+}
+
+std::string sequenceGeometryExplanation(const std::string& animation) {
+    return "objects move with animation '" + animation +
+           "': on each frame they moved, the scene's triangles are uploaded again and everything built from them "
+           "is rebuilt in full, not only the region they touched: the G-buffer, the shadow maps, VCT's "
+           "voxelization, injection, bounces and mips (dense grid, clipmap or sparse grids alike) and the "
+           "reference's BVH; the voxel region is fitted within the bounds the animation sweeps, so the lattice "
+           "of the static geometry stays put";
 }
 
 SequenceFiles sequenceFiles(const std::string& output, int frames) {
@@ -166,6 +161,8 @@ int runRenderSequence(const RenderOptions& o) {
     }
 
     const bool lightsMove = !path.animation.empty() && animationMovesLights(scene, path.animation);
+    const bool geometryMoves = !path.animation.empty() && animationMovesGeometry(scene, path.animation);
+    if (geometryMoves) scene.bounds = animationBounds(scene, path.animation);
     GlContext::shared(parseGlDevice(o.glDevice));
     RenderSession session(scene);
     const std::vector<double> times = pathFrameTimes(path, o.frames);
@@ -175,10 +172,12 @@ int runRenderSequence(const RenderOptions& o) {
         std::cout << describePlan(planRender(session.features(), first))
                   << "sequence: " << o.frames << " frames along " << path.source
                   << "; one session: the scene's voxels, BVH and shadow maps are built on the first frame and "
-                     "kept (the scene is static along the path); a voxel region fitted to the view "
+                     "kept while the scene stands still; a voxel region fitted to the view "
                      "(vct.region=fit) is rebuilt whole when the view changes it, a clipmap whole when a "
                      "cascade's snapped origin moves\n"
-                  << (lightsMove ? sequenceLightsExplanation(path.animation) + "\n" : std::string()) << std::flush;
+                  << (lightsMove ? sequenceLightsExplanation(path.animation) + "\n" : std::string())
+                  << (geometryMoves ? sequenceGeometryExplanation(path.animation) + "\n" : std::string())
+                  << std::flush;
     }
     int kept = 0;
     for (const std::string& f : files.frames) kept += fs::exists(f) ? 1 : 0;
@@ -191,9 +190,10 @@ int runRenderSequence(const RenderOptions& o) {
         const std::string& name = files.frames[size_t(f)];
         removeStaleTemporaries(name);
         if (fs::exists(name)) continue;
-        if (lightsMove) {
-            poseLights(scene, path.animation, times[size_t(f)]);
-            session.lightsChanged();
+        if (lightsMove || geometryMoves) {
+            const AnimationPose moved = poseAnimation(scene, path.animation, times[size_t(f)]);
+            if (moved.meshesMoved) session.geometryChanged();
+            else if (moved.lightsMoved) session.lightsChanged();
         }
         RenderRequest r = base;
         r.camera = cameraOnPath(path, times[size_t(f)], scene);

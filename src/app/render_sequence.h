@@ -3,6 +3,7 @@
 #pragma once
 
 #include "scene/camera_path.h"
+#include "scene/gltf_animation.h"  // checkPathAnimation, which the sequences call
 
 #include <string>
 #include <vector>
@@ -13,10 +14,9 @@ namespace vct {
 // --path when neither exists.
 CameraPath resolveCameraPath(const std::string& spec, const Scene& scene);
 
-// A path's "animation" must move a camera or a light of the scene; UsageError naming both lists.
-void checkPathAnimation(const CameraPath& path, const Scene& scene);
-// The --explain line for a sequence whose lights move.
+// The --explain lines for a sequence whose lights move, and whose objects move.
 std::string sequenceLightsExplanation(const std::string& animation);
+std::string sequenceGeometryExplanation(const std::string& animation);
 
 struct SequenceFiles {
     std::vector<std::string> frames;  // NAME_0000.ext, NAME_0001.ext, ...

@@ -42,7 +42,9 @@ int runSweepCli(const SweepOptions& o) {
     if (o.dryRun) {
         for (const SweepCase& c : mine) {
             const SweepScene& s = spec.scenes[c.scene];
-            std::cout << c.index << " " << c.id << " " << s.path << " (" << s.variants.size() << " variants)\n";
+            std::cout << c.index << " " << c.id << " " << s.path << " (" << s.variants.size() << " variants";
+            if (c.camera.isPath()) std::cout << ", path " << c.camera.path.entry << ", " << c.camera.path.frames << " frames";
+            std::cout << ")\n";
         }
         return 0;
     }

@@ -75,6 +75,8 @@ public:
         if (!p) p = std::make_shared<T>();
         return *static_cast<T*>(p.get());
     }
+    // Drops every method's state (the scene's geometry changed: voxels and BVHs are stale).
+    void clear() { mItems.clear(); }
 
 private:
     std::map<std::string, std::shared_ptr<void>> mItems;

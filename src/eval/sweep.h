@@ -38,15 +38,18 @@ struct SweepSummary {
     int ran = 0, skippedDone = 0, skippedMissing = 0;
 };
 
-// Runs the shard's cases into outDir/cases/<id>/: a case whose results.json exists is
-// skipped (runComparison writes it last, by rename), as is one whose scene file is absent.
+// Runs the shard's cases into outDir/cases/<id>/, each with runComparison, or with
+// runSequenceComparison where its camera is a path: a case whose results.json exists is
+// skipped (both write it last, by rename), as is one whose scene file is absent.
 // Needs a GL context (GlContext::shared()).
 SweepSummary runSweep(const SweepSpec& spec, const SweepRunOptions& options);
 
 // Reads every case under each directory (a sweep dir's cases/*/, or a comparison dir with
 // results.json) and returns {"cases": [...], "records": [...]}: records flattened with
 // case, scene, camera, radius, width, height, gl_renderer, ref_spp, ref_stderr columns and
-// the Pareto flags. Cases are ordered by (case index, id); a case id seen twice keeps the
+// the Pareto flags. A sequence comparison's records (a path case) also get rmse (their
+// rmse_mean, so they share the still records' columns and fronts), frames, camera_path (the
+// path's source) and frame_seeds. Cases are ordered by (case index, id); a case id seen twice keeps the
 // first. `warn` receives a line for each duplicate or incomplete case.
 nlohmann::json mergeSweepResults(const std::vector<std::string>& dirs,
                                  const std::function<void(const std::string&)>& warn = {});

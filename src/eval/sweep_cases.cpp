@@ -55,7 +55,12 @@ std::vector<SweepCase> enumerateSweepCases(const SweepSpec& spec) {
 json caseJson(const SweepSpec& spec, const SweepCase& c) {
     const SweepScene& s = spec.scenes.at(c.scene);
     json cam = {{"label", c.camera.label}};
-    if (c.camera.hasEye) {
+    if (c.camera.isPath()) {
+        cam["path"] = c.camera.path.entry;
+        if (c.camera.path.animation.empty()) cam["path_file"] = c.camera.path.file.source;
+        cam["frames"] = c.camera.path.frames;
+        cam["frame_seeds"] = c.camera.path.perFrameSeeds ? "per-frame" : "fixed";
+    } else if (c.camera.hasEye) {
         cam["eye"] = {c.camera.eye.x, c.camera.eye.y, c.camera.eye.z};
         cam["target"] = {c.camera.target.x, c.camera.target.y, c.camera.target.z};
         cam["fov_deg"] = c.camera.fovDeg;

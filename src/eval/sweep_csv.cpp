@@ -1,6 +1,7 @@
 // The merged sweep records as one CSV table, for spreadsheets and plotting scripts.
 #include "eval/sweep.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace vct {
@@ -8,11 +9,19 @@ namespace vct {
 using nlohmann::json;
 
 std::string mergedCsv(const json& merged) {
-    static const std::vector<std::string> columns = {
+    static const std::vector<std::string> stillColumns = {
         "case",  "scene",       "camera", "radius",   "width",     "height",     "kind",   "method",   "label",
         "params", "time_ms",    "frame_ms", "rmse",   "mae",      "bias",      "max_abs",    "psnr",   "ssim",     "roi_rmse",
         "nonroi_rmse", "ref_spp", "ref_stderr", "pareto", "pareto_roi", "samples_per_pixel",
         "fetches_per_pixel", "rays_per_pixel", "voxel_bytes", "gl_renderer"};
+    // A sequence's own columns come after the still ones, and only where a record has them:
+    // a sweep without camera paths keeps its table as it was.
+    static const std::vector<std::string> sequenceColumns = {"frames", "rmse_worst", "instability", "camera_path",
+                                                             "frame_seeds"};
+    std::vector<std::string> columns = stillColumns;
+    const json& records = merged["records"];
+    if (std::any_of(records.begin(), records.end(), [](const json& r) { return r.contains("frames"); }))
+        columns.insert(columns.end(), sequenceColumns.begin(), sequenceColumns.end());
     auto quote = [](const std::string& s) {
         if (s.find_first_of(",\"\n") == std::string::npos) return s;
         std::string q = "\"";

@@ -102,6 +102,8 @@ json mergeSweepResults(const std::vector<std::string>& dirs, const std::function
         doc["case"] = lc.caseInfo;
         doc["case_dir"] = lc.dir;
         const json& ref = doc.value("reference", json::object());
+        // A sequence comparison's document (a path case, or a `vct compare --path` directory).
+        const bool sequence = lc.results.contains("frames") && lc.results.contains("path");
         for (const json& r : lc.results["records"]) {
             json flat = r;
             const bool ao = r.value("kind", std::string("ao")) == "ao";
@@ -116,6 +118,14 @@ json mergeSweepResults(const std::vector<std::string>& dirs, const std::function
             flat["ref_spp"] = ref.value("spp", 0);
             const char* stderrKey = ao ? "ao_rms_pixel_stderr" : "gi_rms_pixel_stderr";
             flat["ref_stderr"] = ref.contains(stderrKey) ? ref[stderrKey] : json(nullptr);
+            if (sequence) {
+                if (!flat.contains("rmse")) flat["rmse"] = r.value("rmse_mean", json(nullptr));
+                flat["frames"] = lc.results["frames"];
+                flat["camera_path"] = lc.results["path"].value("source", std::string());
+                flat["frame_seeds"] = lc.results.value("per_frame_seeds", true) ? "per-frame" : "fixed";
+                if (flat.contains("frames_dir") && flat["frames_dir"].is_string())
+                    flat["frames_dir"] = (fs::path(lc.dir) / flat["frames_dir"].get<std::string>()).string();
+            }
             if (flat.contains("images") && flat["images"].is_object())
                 for (auto it = flat["images"].begin(); it != flat["images"].end(); ++it)
                     if (it.value().is_string()) it.value() = (fs::path(lc.dir) / it.value().get<std::string>()).string();

@@ -1,9 +1,13 @@
-// Running a sweep: the shard's cases one comparison each, skipping the cases done already
-// (resume) and those whose scene file is absent.
+// Running a sweep: the shard's cases one comparison each (a still one, or a sequence
+// comparison along the case's camera path), skipping the cases done already (resume) and
+// those whose scene file is absent.
 #include "eval/sweep.h"
 
 #include "core/errors.h"
+#include "eval/sequence_comparison.h"
 #include "scene/camera.h"
+#include "scene/camera_path.h"
+#include "scene/gltf_animation.h"
 #include "scene/gltf_loader.h"
 #include "util/atomic_file.h"
 
@@ -35,6 +39,27 @@ Shard parseShard(const std::string& text) {
         throw UsageError("--shard '" + text + "': need N >= 1 and 0 <= I < N");
     return s;
 }
+
+namespace {
+
+// The case's camera path: the file read while parsing the spec, or the loaded scene's camera
+// animation for "gltf:NAME".
+CameraPath casePath(const SweepCameraPath& p, const Scene& scene) {
+    CameraPath path;
+    if (p.animation.empty()) {
+        path = p.file;
+    } else {
+        try {
+            path = cameraAnimationPath(scene, p.animation);
+        } catch (const std::invalid_argument& e) {
+            throw UsageError("camera path " + p.entry + ": " + e.what());
+        }
+    }
+    checkPathAnimation(path, scene);
+    return path;
+}
+
+}  // namespace
 
 std::vector<SweepCase> casesOfShard(const std::vector<SweepCase>& cases, const Shard& shard) {
     std::vector<SweepCase> out;
@@ -90,14 +115,22 @@ SweepSummary runSweep(const SweepSpec& spec, const SweepRunOptions& o) {
         cs.base.voxelRes = s.settings.voxelRes;
         cs.base.sky = s.settings.sky;
         for (const auto& [key, value] : s.settings.params) cs.base.params.set(key, value);
-        CameraRequest cam;
-        cam.nameOrIndex = c.camera.nameOrIndex;
-        cam.hasEye = c.camera.hasEye;
-        cam.eye = c.camera.eye;
-        cam.target = c.camera.target;
-        cam.fovDeg = c.camera.fovDeg;
+        SequenceSettings seq;
         try {
-            cs.base.camera = resolveCamera(*scene, cam, float(cs.base.width) / float(cs.base.height));
+            if (c.camera.isPath()) {
+                seq.path = casePath(c.camera.path, *scene);
+                seq.frames = c.camera.path.frames;
+                seq.perFrameSeeds = c.camera.path.perFrameSeeds;
+                cs.base.camera = cameraOnPath(seq.path, seq.path.startTime(), *scene);  // frame 0's
+            } else {
+                CameraRequest cam;
+                cam.nameOrIndex = c.camera.nameOrIndex;
+                cam.hasEye = c.camera.hasEye;
+                cam.eye = c.camera.eye;
+                cam.target = c.camera.target;
+                cam.fovDeg = c.camera.fovDeg;
+                cs.base.camera = resolveCamera(*scene, cam, float(cs.base.width) / float(cs.base.height));
+            }
         } catch (const UsageError& e) {
             throw UsageError("case " + c.id + ": " + e.what());
         }
@@ -110,7 +143,14 @@ SweepSummary runSweep(const SweepSpec& spec, const SweepRunOptions& o) {
         fs::create_directories(dir);
         writeTextFileAtomic((dir / "case.json").string(), caseJson(spec, c).dump(2) + "\n");
         try {
-            runComparison(*scene, cs);  // writes results.json last, by rename: the "done" mark
+            // Both write results.json last, by rename: the "done" mark.
+            if (c.camera.isPath()) {
+                seq.comparison = cs;
+                checkSequenceSettings(seq);
+                runSequenceComparison(*scene, seq);
+            } else {
+                runComparison(*scene, cs);
+            }
         } catch (const UsageError& e) {
             throw UsageError("case " + c.id + ": " + e.what());
         } catch (const InternalError&) {
@@ -121,7 +161,9 @@ SweepSummary runSweep(const SweepSpec& spec, const SweepRunOptions& o) {
         double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         char secs[32];
         std::snprintf(secs, sizeof secs, "%.1f", seconds);
-        log(head + "ran " + std::to_string(s.variants.size()) + " variants in " + secs + " s");
+        const std::string frames =
+            c.camera.isPath() ? " over " + std::to_string(c.camera.path.frames) + " frames" : std::string();
+        log(head + "ran " + std::to_string(s.variants.size()) + " variants" + frames + " in " + secs + " s");
         ++summary.ran;
     }
     return summary;

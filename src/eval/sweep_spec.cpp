@@ -6,6 +6,7 @@
 #include "core/errors.h"
 #include "core/request.h"
 #include "methods/registry.h"
+#include "scene/camera_path.h"
 
 #include <algorithm>
 #include <cmath>
@@ -99,14 +100,66 @@ std::vector<MethodVariant> parseMethods(const json& j, const std::string& where)
     return out;
 }
 
-std::vector<SweepCamera> parseCameras(const json& j, const std::string& where) {
-    if (!j.is_array() || j.empty()) fail(where, "expected a non-empty list of camera names, indices or {eye, target}");
+// A camera entry with "path": a path file (resolved like a scene, read and checked now, so a
+// bad path stops the sweep before anything runs) or "gltf:NAME", the scene's own camera
+// animation (checked when the scene loads). Its label defaults to the file's stem or NAME.
+SweepCamera parsePathCamera(const json& c, const std::string& w, const SweepPaths& paths) {
+    checkKnownFields(c, w, {"name", "label", "path", "frames", "frame_seeds"});
+    SweepCamera cam;
+    const std::string wp = join(w, "path");
+    if (!c["path"].is_string() || c["path"].get<std::string>().empty())
+        fail(wp, "expected a camera path file or \"gltf:NAME\", got " + c["path"].dump());
+    cam.path.entry = c["path"].get<std::string>();
+    const std::string gltf = "gltf:";
+    if (cam.path.entry.compare(0, gltf.size(), gltf) == 0) {
+        cam.path.animation = cam.path.entry.substr(gltf.size());
+        if (cam.path.animation.empty()) fail(wp, "\"gltf:\" needs the name or index of a camera animation of the scene");
+        cam.label = cam.path.animation;
+    } else {
+        std::string file;
+        try {
+            file = resolveScenePath(cam.path.entry, paths);
+        } catch (const UsageError& e) {
+            fail(wp, e.what());
+        }
+        if (!fs::exists(file))
+            fail(wp, "no such file " + file + " (looked up beside the spec, then in the repository; "
+                     "\"gltf:NAME\" plays a camera animation of the scene)");
+        try {
+            cam.path.file = loadCameraPath(file);
+        } catch (const std::exception& e) {
+            fail(wp, e.what());
+        }
+        cam.label = fs::path(cam.path.entry).stem().string();
+    }
+    if (!c.contains("frames")) fail(join(w, "frames"), "required with a path: the number of frames, in [1, 10000]");
+    cam.path.frames = intField(c["frames"], join(w, "frames"), 1, 10000);
+    if (c.contains("frame_seeds")) {
+        const json& fsd = c["frame_seeds"];
+        if (!fsd.is_string() || (fsd != "per-frame" && fsd != "fixed"))
+            fail(join(w, "frame_seeds"), "expected \"per-frame\" or \"fixed\", got " + fsd.dump());
+        cam.path.perFrameSeeds = fsd == "per-frame";
+    }
+    if (c.contains("name") && c.contains("label")) fail(join(w, "label"), "give \"name\" or \"label\", not both");
+    for (const char* key : {"name", "label"})
+        if (c.contains(key)) {
+            if (!c[key].is_string() || c[key].get<std::string>().empty()) fail(join(w, key), "expected a name");
+            cam.label = c[key].get<std::string>();
+        }
+    return cam;
+}
+
+std::vector<SweepCamera> parseCameras(const json& j, const std::string& where, const SweepPaths& paths) {
+    if (!j.is_array() || j.empty())
+        fail(where, "expected a non-empty list of camera names, indices, {eye, target} or {path, frames}");
     std::vector<SweepCamera> out;
     for (size_t i = 0; i < j.size(); ++i) {
         const std::string w = indexed(where, i);
         const json& c = j[i];
         SweepCamera cam;
-        if (c.is_string()) {
+        if (c.is_object() && c.contains("path")) {
+            cam = parsePathCamera(c, w, paths);
+        } else if (c.is_string()) {
             cam.nameOrIndex = cam.label = c.get<std::string>();
             if (cam.label.empty()) fail(w, "empty camera name");
         } else if (c.is_number_integer()) {
@@ -114,6 +167,8 @@ std::vector<SweepCamera> parseCameras(const json& j, const std::string& where) {
             cam.nameOrIndex = std::to_string(idx);
             cam.label = "cam" + cam.nameOrIndex;
         } else if (c.is_object()) {
+            for (const char* key : {"frames", "frame_seeds"})
+                if (c.contains(key)) fail(join(w, "path"), std::string("required with \"") + key + "\"");
             checkKnownFields(c, w, {"name", "eye", "target", "fov"});
             auto vec3 = [&](const char* key) {
                 const std::string wk = join(w, key);
@@ -139,7 +194,8 @@ std::vector<SweepCamera> parseCameras(const json& j, const std::string& where) {
                 cam.label = c["name"].get<std::string>();
             }
         } else {
-            fail(w, "expected a camera name, an index or {\"eye\", \"target\", \"fov\", \"name\"}");
+            fail(w, "expected a camera name, an index, {\"eye\", \"target\", \"fov\", \"name\"} or "
+                    "{\"path\", \"frames\", \"frame_seeds\", \"name\"}");
         }
         out.push_back(cam);
     }
@@ -236,7 +292,7 @@ SweepSpec parseSweepSpec(const json& j, const SweepPaths& paths, const std::stri
             if (!e.contains("path") || !e["path"].is_string()) fail(join(w, "path"), "expected the scene file");
             s.entry = e["path"].get<std::string>();
             readSettings(e, w, s.settings);
-            if (e.contains("cameras")) s.cameras = parseCameras(e["cameras"], join(w, "cameras"));
+            if (e.contains("cameras")) s.cameras = parseCameras(e["cameras"], join(w, "cameras"), paths);
             if (e.contains("methods")) s.variants = parseMethods(e["methods"], join(w, "methods"));
         } else {
             fail(w, "expected a scene path or {\"path\", ...}");

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "eval/comparison.h"
+#include "scene/camera_path.h"
 
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
@@ -14,14 +15,27 @@
 
 namespace vct {
 
+// A camera moving along a path: a case with one runs a sequence comparison
+// (eval/sequence_comparison.h) instead of a still one.
+struct SweepCameraPath {
+    std::string entry;      // as written in the spec: a file, or "gltf:NAME" (empty: no path)
+    std::string animation;  // NAME of "gltf:NAME": the scene's camera animation, known once it loads
+    CameraPath file;        // the path file, read and checked while parsing (unused for gltf:)
+    int frames = 0;         // [1, 10000]
+    bool perFrameSeeds = true;  // "frame_seeds": "per-frame" (true) or "fixed"
+};
+
 // A view of one scene: a camera of the file (by name or index; empty = the file's first
-// camera, else a framing of the bounds) or an explicit eye/target/fov.
+// camera, else a framing of the bounds), an explicit eye/target/fov, or a camera path.
 struct SweepCamera {
     std::string label;        // part of the case id: the name, "cam<index>", "default" or given
     std::string nameOrIndex;  // file camera; empty with hasEye = false: the default camera
     bool hasEye = false;
     glm::vec3 eye{0.f}, target{0.f};
     float fovDeg = 45.f;      // vertical, degrees, (0, 180)
+    SweepCameraPath path;     // set (path.entry not empty): the case is a sequence
+
+    bool isPath() const { return !path.entry.empty(); }
 };
 
 // Settings a scene entry may override (top level gives the defaults).

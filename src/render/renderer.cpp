@@ -113,6 +113,15 @@ void RenderSession::lightsChanged() {
     GlContext::shared().checkErrors("lights");
 }
 
+void RenderSession::geometryChanged() {
+    mImpl->methods.clear();
+    mImpl->gbuffers.clear();
+    mImpl->shadows.reset();
+    mImpl->gpu = uploadScene(mScene);
+    mFeatures = analyzeScene(mScene);
+    GlContext::shared().checkErrors("geometry");
+}
+
 RenderResult RenderSession::render(const RenderRequest& request) {
     if (request.width < 1 || request.height < 1 || request.width > 16384 || request.height > 16384)
         throw UsageError("--size " + std::to_string(request.width) + "x" + std::to_string(request.height) +

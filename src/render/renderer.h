@@ -47,6 +47,11 @@ public:
     // caller: scene/gltf_animation.h's poseLights): uploads them and drops the shadow maps; the
     // methods see new lights through their keys (VCT injects again into the voxels it keeps).
     void lightsChanged();
+    // The scene's triangles moved (posed in place by the caller: scene/gltf_animation.h's
+    // poseAnimation): uploads them again and drops everything built from them, the G-buffers,
+    // the shadow maps and every method's state (voxel grids, the BVH), so the next render
+    // rebuilds them in full.
+    void geometryChanged();
     const Scene& scene() const { return mScene; }
     const SceneFeatures& features() const { return mFeatures; }
     // How many times each shared pass actually ran in this session (tests use it to check

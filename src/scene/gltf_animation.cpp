@@ -11,6 +11,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#define GLM_ENABLE_EXPERIMENTAL
+#include <glm/gtx/matrix_decompose.hpp>
 
 #include <algorithm>
 #include <array>
@@ -313,18 +315,53 @@ LightAnimationTrack sampleLightTrack(const LoadContext& load, int animIndex, con
     return track;
 }
 
+MeshAnimationTrack sampleMeshTrack(const LoadContext& load, int animIndex, const LoadContext::PlacedMesh& placed,
+                                   const std::vector<TrsChannel>& channels) {
+    const tinygltf::Animation& anim = load.model.animations[size_t(animIndex)];
+    MeshAnimationTrack track;
+    track.name = anim.name.empty() ? "animation" + std::to_string(animIndex) : anim.name;
+    track.animation = animIndex;
+    track.nodeName = label("node", placed.node, load.model.nodes[size_t(placed.node)].name);
+    const std::string where = label("animation", animIndex, anim.name) + " (" + track.nodeName + ")";
+    // The rest pose in double precision, as the loader composed it (no channel substituted).
+    const glm::dmat4 worldAtRest = worldAt(load, placed.nodeChain, {}, 0.0);
+    if (!(std::abs(glm::determinant(glm::dmat3(worldAtRest))) > 1e-30))
+        load.fail(where + ": the node's transform as loaded is singular, so its vertices cannot be moved from it");
+    track.nodeFromWorldAtRest = glm::mat4(glm::inverse(worldAtRest));
+    track.firstVertex = placed.firstVertex;
+    const auto first = load.scene.positions.begin() + placed.firstVertex;
+    track.restPositions.assign(first, first + placed.vertexCount);
+    const auto firstNormal = load.scene.normals.begin() + placed.firstVertex;
+    track.restNormals.assign(firstNormal, firstNormal + placed.vertexCount);
+    for (double t : sampleTimes(channels)) {
+        const glm::mat4 world(worldAt(load, placed.nodeChain, channels, t));
+        for (int c = 0; c < 4; ++c)
+            if (!std::isfinite(world[c].x) || !std::isfinite(world[c].y) || !std::isfinite(world[c].z) ||
+                !std::isfinite(world[c].w))
+                load.fail(where + " at " + num(t) + " s: node transform is not finite in single precision");
+        track.keys.push_back({t, world});
+    }
+    return track;
+}
+
 }  // namespace
 
 namespace {
 
 // True when node `index` or a node below it carries a mesh (depth-limited against cycles, which
 // visitNode has already refused for the nodes of the scene).
-bool carriesGeometry(const tinygltf::Model& model, int index, size_t depth) {
+bool carriesSkin(const tinygltf::Model& model, int index, size_t depth) {
     if (index < 0 || index >= int(model.nodes.size()) || depth > model.nodes.size()) return false;
     const tinygltf::Node& node = model.nodes[size_t(index)];
-    if (node.mesh >= 0 || node.skin >= 0) return true;
+    if (node.skin >= 0) return true;
     for (int child : node.children)
-        if (carriesGeometry(model, child, depth + 1)) return true;
+        if (carriesSkin(model, child, depth + 1)) return true;
+    return false;
+}
+
+bool isJoint(const tinygltf::Model& model, int index) {
+    for (const tinygltf::Skin& skin : model.skins)
+        if (std::find(skin.joints.begin(), skin.joints.end(), index) != skin.joints.end()) return true;
     return false;
 }
 
@@ -338,9 +375,11 @@ void findGeometryAnimations(LoadContext& load) {
         for (const tinygltf::AnimationChannel& ch : anim.channels) {
             if (ch.target_node < 0 || ch.target_node >= int(model.nodes.size())) continue;
             const tinygltf::Node& node = model.nodes[size_t(ch.target_node)];
+            const std::string target = label("node", ch.target_node, node.name);
             std::string what;
-            if (ch.target_path == "weights") what = "animates the morph target weights of " + label("node", ch.target_node, node.name);
-            else if (carriesGeometry(model, ch.target_node, 0)) what = "moves " + label("node", ch.target_node, node.name) + ", which carries a mesh or skin";
+            if (ch.target_path == "weights") what = "animates the morph target weights of " + target;
+            else if (isJoint(model, ch.target_node)) what = "moves " + target + ", a joint of a skin";
+            else if (carriesSkin(model, ch.target_node, 0)) what = "moves " + target + ", which carries a skinned mesh";
             if (what.empty()) continue;
             load.scene.geometryAnimations.push_back({name, what});
             break;
@@ -354,6 +393,27 @@ void addLightAnimations(LoadContext& load) {
             const std::vector<TrsChannel> channels = channelsMoving(load, int(a), placed.nodeChain);
             if (!channels.empty()) load.scene.lightAnimations.push_back(sampleLightTrack(load, int(a), placed, channels));
         }
+}
+
+void addMeshAnimations(LoadContext& load) {
+    for (size_t a = 0; a < load.model.animations.size(); ++a) {
+        // A malformed animation of an object does not stop the file's still renders: it is
+        // named instead (Scene::geometryAnimations), and a sequence that plays it is refused.
+        std::vector<MeshAnimationTrack> tracks;
+        try {
+            for (const LoadContext::PlacedMesh& placed : load.placedMeshes) {
+                const std::vector<TrsChannel> channels = channelsMoving(load, int(a), placed.nodeChain);
+                if (!channels.empty()) tracks.push_back(sampleMeshTrack(load, int(a), placed, channels));
+            }
+        } catch (const SceneError& e) {
+            const tinygltf::Animation& anim = load.model.animations[a];
+            load.scene.geometryAnimations.push_back(
+                {anim.name.empty() ? "animation" + std::to_string(a) : anim.name,
+                 std::string("is malformed where it moves an object (") + e.what() + ")"});
+            continue;
+        }
+        for (MeshAnimationTrack& t : tracks) load.scene.meshAnimations.push_back(std::move(t));
+    }
 }
 
 void addCameraAnimations(LoadContext& load) {
@@ -408,6 +468,102 @@ int poseLights(Scene& scene, const std::string& animation, double t) {
     return moved;
 }
 
+namespace {
+
+// The node's world transform at time t: exact at a sample, its translation, rotation (shortest
+// slerp) and scale interpolated between two (a sheared chain loses its shear between samples).
+glm::mat4 worldFromNodeAt(const MeshAnimationTrack& track, double t) {
+    const std::vector<MeshAnimationKey>& k = track.keys;
+    if (t <= k.front().time) return k.front().worldFromNode;
+    if (t >= k.back().time) return k.back().worldFromNode;
+    const size_t i = size_t(std::upper_bound(k.begin(), k.end(), t, [](double x, const MeshAnimationKey& key) {
+                                return x < key.time;
+                            }) - k.begin()) - 1;
+    if (t == k[i].time) return k[i].worldFromNode;
+    const float u = float((t - k[i].time) / (k[i + 1].time - k[i].time));
+    glm::vec3 scale[2], translation[2], skew;
+    glm::quat rotation[2];
+    glm::vec4 perspective;
+    for (int j = 0; j < 2; ++j)
+        if (!glm::decompose(k[i + size_t(j)].worldFromNode, scale[j], rotation[j], translation[j], skew, perspective))
+            return u < 0.5f ? k[i].worldFromNode : k[i + 1].worldFromNode;  // singular: the nearer sample
+    return glm::translate(glm::mat4(1.f), glm::mix(translation[0], translation[1], u)) *
+           glm::mat4_cast(glm::slerp(rotation[0], rotation[1], u)) *
+           glm::scale(glm::mat4(1.f), glm::mix(scale[0], scale[1], u));
+}
+
+// The map from the node's vertices as loaded to where they are at time t.
+glm::mat4 worldFromRestAt(const MeshAnimationTrack& track, double t) {
+    return worldFromNodeAt(track, t) * track.nodeFromWorldAtRest;
+}
+
+}  // namespace
+
+bool animationMovesGeometry(const Scene& scene, const std::string& animation) {
+    for (const MeshAnimationTrack& t : scene.meshAnimations)
+        if (t.name == animation) return true;
+    return false;
+}
+
+int poseMeshes(Scene& scene, const std::string& animation, double t) {
+    int changed = 0;
+    for (const MeshAnimationTrack& track : scene.meshAnimations) {
+        if (track.name != animation || track.firstVertex + track.restPositions.size() > scene.positions.size()) continue;
+        const glm::mat4 m = worldFromRestAt(track, t);
+        const glm::mat3 normalFromRest = glm::transpose(glm::inverse(glm::mat3(m)));
+        bool moved = false;
+        for (size_t v = 0; v < track.restPositions.size(); ++v) {
+            const glm::vec3 p = glm::vec3(m * glm::vec4(track.restPositions[v], 1.f));
+            glm::vec3 n = normalFromRest * track.restNormals[v];
+            n = glm::length(n) > 0.f ? glm::normalize(n) : track.restNormals[v];
+            glm::vec3& position = scene.positions[track.firstVertex + v];
+            glm::vec3& normal = scene.normals[track.firstVertex + v];
+            moved = moved || position != p || normal != n;
+            position = p;
+            normal = n;
+        }
+        changed += moved ? 1 : 0;
+    }
+    return changed;
+}
+
+Bounds3 animationBounds(const Scene& scene, const std::string& animation) {
+    Bounds3 b = scene.bounds;
+    for (const MeshAnimationTrack& track : scene.meshAnimations) {
+        if (track.name != animation) continue;
+        Bounds3 rest;
+        for (const glm::vec3& p : track.restPositions) rest.expand(p);
+        for (const MeshAnimationKey& key : track.keys) {
+            const glm::mat4 m = key.worldFromNode * track.nodeFromWorldAtRest;
+            for (int c = 0; c < 8; ++c) {
+                const glm::vec3 corner(c & 1 ? rest.max.x : rest.min.x, c & 2 ? rest.max.y : rest.min.y,
+                                       c & 4 ? rest.max.z : rest.min.z);
+                b.expand(glm::vec3(m * glm::vec4(corner, 1.f)));
+            }
+        }
+    }
+    return b;
+}
+
+AnimationPose poseAnimation(Scene& scene, const std::string& animation, double t) {
+    AnimationPose pose;
+    pose.lightsMoved = poseLights(scene, animation, t);
+    pose.meshesMoved = poseMeshes(scene, animation, t);
+    return pose;
+}
+
+std::string describeMeshAnimations(const Scene& scene) {
+    if (scene.meshAnimations.empty()) return "(none)";
+    std::ostringstream os;
+    for (size_t i = 0; i < scene.meshAnimations.size(); ++i) {
+        const MeshAnimationTrack& t = scene.meshAnimations[i];
+        os << (i ? ", " : "") << i << " '" << t.name << "' (" << t.nodeName << ", " << t.restPositions.size()
+           << " vertices, " << t.keys.front().time << ".." << t.keys.back().time << " s, " << t.keys.size()
+           << " keys)";
+    }
+    return os.str();
+}
+
 std::vector<CameraAnimationInfo> listCameraAnimations(const Scene& scene) {
     std::vector<CameraAnimationInfo> out;
     for (const CameraAnimationTrack& track : scene.cameraAnimations)
@@ -444,6 +600,22 @@ CameraPath cameraAnimationPath(const Scene& scene, const std::string& nameOrInde
         path.keys.push_back({k.time, k.eye, k.target, k.up, glm::degrees(k.yfov)});
     path.animation = found->name;  // the same animation moves the scene's lights along
     return path;
+}
+
+void checkPathAnimation(const CameraPath& path, const Scene& scene) {
+    if (path.animation.empty()) return;
+    for (const auto& [name, what] : scene.geometryAnimations)
+        if (name == path.animation)
+            throw UsageError(path.source + ": animation '" + name + "' " + what +
+                             ": a sequence plays rigid animations of cameras, lights and objects (skins and morph "
+                             "targets are not posed)");
+    if (animationMovesLights(scene, path.animation) || animationMovesGeometry(scene, path.animation)) return;
+    for (const CameraAnimationTrack& t : scene.cameraAnimations)
+        if (t.name == path.animation) return;
+    throw UsageError(path.source + ": animation '" + path.animation + "' moves no camera, light or object of " +
+                     scene.path + " (camera animations: " + describeCameraAnimations(scene) +
+                     "; light animations: " + describeLightAnimations(scene) +
+                     "; object animations: " + describeMeshAnimations(scene) + ")");
 }
 
 }  // namespace vct

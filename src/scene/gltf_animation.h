@@ -56,4 +56,34 @@ bool animationMovesLights(const Scene& scene, const std::string& animation);
 // samples; held at the ends). Returns how many lights it moved; the others keep their pose.
 int poseLights(Scene& scene, const std::string& animation, double t);
 
+// Mesh nodes moved rigidly by glTF animations (a node's own translation, rotation or scale, or
+// an ancestor's), sampled at load time as camera tracks are (Scene::meshAnimations). Skins and
+// morph targets are not posed (Scene::geometryAnimations names the animations that use them).
+// "0 'slide' (node 3 'box', 24 vertices, 0..2 s, 33 keys)" or "(none)".
+std::string describeMeshAnimations(const Scene& scene);
+// True when `animation` moves a mesh node of the scene.
+bool animationMovesGeometry(const Scene& scene, const std::string& animation);
+// Places the vertices (positions and normals) of every mesh node that `animation` moves where
+// they are at time t, computed from the node's rest pose: exact at the dense samples, the
+// node's translation, rotation and scale interpolated between them; held at the ends. Returns
+// how many nodes' vertices changed. Scene::bounds is left as it is (animationBounds).
+int poseMeshes(Scene& scene, const std::string& animation, double t);
+// Scene::bounds grown by every sampled pose of the nodes `animation` moves (their rest box's
+// corners carried along): bounds a sequence can keep for all its frames, so a voxel lattice
+// fixed to the scene does not move with the object.
+Bounds3 animationBounds(const Scene& scene, const std::string& animation);
+
+// What posing a scene at one instant of an animation changed.
+struct AnimationPose {
+    int lightsMoved = 0;  // lights placed by the animation (poseLights)
+    int meshesMoved = 0;  // mesh nodes whose vertices changed (poseMeshes)
+};
+// poseLights and poseMeshes at time t.
+AnimationPose poseAnimation(Scene& scene, const std::string& animation, double t);
+
+// A path's "animation" must move a camera, a light or a mesh node of the scene rigidly;
+// otherwise a UsageError naming the scene's animations, or what the animation deforms (a skin,
+// morph weights) or where it is malformed. Every sequence (render, compare, sweep) checks it.
+void checkPathAnimation(const CameraPath& path, const Scene& scene);
+
 }  // namespace vct

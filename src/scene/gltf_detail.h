@@ -48,6 +48,14 @@ struct LoadContext {
         std::vector<int> nodeChain;  // root first, the light's own node last
     };
     std::vector<PlacedLight> placedLights;
+    // Each mesh node's vertices with the nodes that place them, for the animations that move them.
+    struct PlacedMesh {
+        int node = -1;
+        uint32_t firstVertex = 0, vertexCount = 0;  // in Scene::positions
+        glm::mat4 worldFromNode{1.f};               // as loaded
+        std::vector<int> nodeChain;                 // root first, the mesh's own node last
+    };
+    std::vector<PlacedMesh> placedMeshes;
 
     LoadContext(const tinygltf::Model& m, const std::string& p) : model(m), path(p) {}
 
@@ -94,7 +102,10 @@ void boundInfiniteFarPlanes(LoadContext& load);
 void addCameraAnimations(LoadContext& load);
 // The same for the animations that move a punctual light (Scene::lightAnimations).
 void addLightAnimations(LoadContext& load);
-// Names the animations that move geometry (Scene::geometryAnimations), without reading their samplers.
+// The same for the animations that move a mesh node rigidly (Scene::meshAnimations).
+void addMeshAnimations(LoadContext& load);
+// Names the animations that deform geometry, skins and morph target weights
+// (Scene::geometryAnimations), without reading their samplers.
 void findGeometryAnimations(LoadContext& load);
 
 // The node hierarchy (gltf_nodes.cpp).

@@ -67,6 +67,7 @@ Scene sceneFromModel(const tinygltf::Model& model, const std::string& pathForMes
     boundInfiniteFarPlanes(load);
     addCameraAnimations(load);
     addLightAnimations(load);
+    addMeshAnimations(load);
     findGeometryAnimations(load);
     return std::move(scene);
 }

@@ -82,8 +82,13 @@ void visitNode(LoadContext& load, int nodeIndex, const glm::mat4& worldFromParen
         if (node.mesh >= int(model.meshes.size()))
             load.fail(where + ": " + outOfRange("mesh", node.mesh, model.meshes.size()));
         const tinygltf::Mesh& mesh = model.meshes[size_t(node.mesh)];
+        const uint32_t first = uint32_t(load.scene.positions.size());
         for (size_t p = 0; p < mesh.primitives.size(); ++p)
             addPrimitive(load, node.mesh, int(p), worldFromLocal, offscreen);
+        std::vector<int> chain = load.nodeStack;
+        chain.push_back(nodeIndex);
+        const uint32_t count = uint32_t(load.scene.positions.size()) - first;
+        if (count > 0) load.placedMeshes.push_back({nodeIndex, first, count, worldFromLocal, std::move(chain)});
     }
     load.nodeStack.push_back(nodeIndex);
     const size_t lightsBefore = load.scene.lights.size();

@@ -117,6 +117,26 @@ struct LightAnimationTrack {
     std::vector<LightAnimationKey> keys;  // at least one, times strictly increasing
 };
 
+// One instant of a glTF animation of a mesh node, in world space: the node's world transform.
+struct MeshAnimationKey {
+    double time = 0.0;
+    glm::mat4 worldFromNode{1.f};
+};
+
+// A glTF animation that moves a mesh node (its node or an ancestor) rigidly: the node's world
+// transform sampled as camera tracks are, and the node's vertices as loaded (its rest pose) so a
+// pose at any time is computed from them, never from the last pose (no drift).
+struct MeshAnimationTrack {
+    std::string name;      // the glTF animation's name, "animation<index>" when it has none
+    int animation = -1;
+    std::string nodeName;  // the moved mesh node, "node <index>" when it has no name
+    uint32_t firstVertex = 0;  // the node's vertices: [firstVertex, firstVertex + restPositions.size())
+    glm::mat4 nodeFromWorldAtRest{1.f};  // inverse of the node's world transform as loaded
+    std::vector<glm::vec3> restPositions;
+    std::vector<glm::vec3> restNormals;
+    std::vector<MeshAnimationKey> keys;  // at least one, times strictly increasing
+};
+
 struct Scene {
     std::string path;  // where it came from (for messages), may be empty
 
@@ -138,9 +158,12 @@ struct Scene {
     // One track per (animation, light) pair whose animation moves that light; lights above hold
     // the unanimated pose (scene/gltf_animation.h poses them at a time).
     std::vector<LightAnimationTrack> lightAnimations;
-    // Animations that would move geometry (a mesh node or its ancestor, a skin, morph target
-    // weights), by name, with what they move: sequences refuse to play them, since the scene's
-    // triangles stand still along a path.
+    // One track per (animation, mesh node) pair whose animation moves that node rigidly (its
+    // own translation, rotation or scale, or an ancestor's); positions and normals above hold
+    // the unanimated pose (scene/gltf_animation.h poses them at a time).
+    std::vector<MeshAnimationTrack> meshAnimations;
+    // Animations that deform geometry (a skin, morph target weights), by name, with what they
+    // deform: sequences refuse to play them, since only rigid motion is posed.
     std::vector<std::pair<std::string, std::string>> geometryAnimations;
 
     Bounds3 bounds;

@@ -49,8 +49,8 @@ void addSun(SceneBuilder& b, float intensity = 2.f) {
                           intensity);
 }
 
-// The Cornell box under `name`; `pointLight` (when given) receives the point light's node.
-SceneBuilder cornellBoxNamed(const std::string& name, int* pointLight) {
+// The Cornell box under `name`; `pointLight` and `shortBox` (when given) receive those nodes.
+SceneBuilder cornellBoxNamed(const std::string& name, int* pointLight, int* shortBox = nullptr) {
     SceneBuilder b(name);
     const int white = b.addMaterial("white", kWhite);
     const int red = b.addMaterial("red", kRed);
@@ -64,7 +64,9 @@ SceneBuilder cornellBoxNamed(const std::string& name, int* pointLight) {
     b.addQuad("right_wall", glm::vec3(1, 0, -1), glm::vec3(0, 0, 2), glm::vec3(0, 2, 0), green);
     b.addTransformedBox("tall_box", boxAt(glm::vec3(-0.33f, 0.6f, -0.3f), glm::vec3(0.6f, 1.2f, 0.6f), 17.f),
                         white);
-    b.addTransformedBox("short_box", boxAt(glm::vec3(0.35f, 0.3f, 0.35f), glm::vec3(0.6f), -17.f), white);
+    const int shortNode =
+        b.addTransformedBox("short_box", boxAt(glm::vec3(0.35f, 0.3f, 0.35f), glm::vec3(0.6f), -17.f), white);
+    if (shortBox) *shortBox = shortNode;
     // The emitter 2 cm under the ceiling, facing down: cross(+X, +Z) = -Y.
     b.addQuad("ceiling_light", glm::vec3(-0.25f, 1.98f, -0.25f), glm::vec3(0.5f, 0, 0), glm::vec3(0, 0, 0.5f),
               light);
@@ -85,6 +87,16 @@ SceneBuilder cornellMovingLight() {
     SceneBuilder b = cornellBoxNamed("cornell_moving_light", &lamp);
     b.addTranslationAnimation("light_sweep", lamp, {0.f, 1.f, 2.f},
                               {glm::vec3(-0.55f, 1.75f, -0.4f), glm::vec3(0.f, 1.6f, 0.2f), glm::vec3(0.55f, 1.75f, -0.4f)});
+    return b;
+}
+
+// The box with its short box sliding across the floor, right to left in front of the tall one
+// (animation box_slide, 0..2 s): an object that moves while the light stands, so contact
+// shadows, occlusion and the colour bleeding onto it move with it.
+SceneBuilder cornellMovingBox() {
+    int box = -1;
+    SceneBuilder b = cornellBoxNamed("cornell_moving_box", nullptr, &box);
+    b.addTranslationAnimation("box_slide", box, {0.f, 2.f}, {glm::vec3(0.35f, 0.3f, 0.35f), glm::vec3(-0.3f, 0.3f, 0.55f)});
     return b;
 }
 
@@ -298,6 +310,7 @@ SceneBuilder wallBase() {
 const std::vector<std::pair<std::string, std::function<SceneBuilder()>>>& registry() {
     static const std::vector<std::pair<std::string, std::function<SceneBuilder()>>> scenes = {
         {"cornell_box", cornellBox},
+        {"cornell_moving_box", cornellMovingBox},
         {"cornell_moving_light", cornellMovingLight},
         {"default", courtyard},
         {"offscreen_overhang", offscreenOverhang},

@@ -4,6 +4,8 @@
 //   cornell_box            the classic box [-1,1]x[0,2]x[-1,1], open at +Z: red left wall, green right
 //                          wall, two rotated boxes, an emissive quad under the ceiling and a point
 //                          light below it; camera "front" looks in through the opening
+//   cornell_moving_box     the same box, its short box slid across the floor by the animation
+//                          box_slide (0..2 s), in front of the tall one
 //   cornell_moving_light   the same box, its point light moved by the animation light_sweep (0..2 s)
 //   default                what `make render` renders: a sunlit courtyard corner with an arch, a table,
 //                          stacked boxes, a pillar, an emissive panel, a sun and a point light

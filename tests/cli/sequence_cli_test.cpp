@@ -108,7 +108,7 @@ TEST(SequenceCli, BadPathsAreClearErrorsBeforeAnyOutput) {
     std::ofstream(named) << R"({"animation": "nope", "keys": [{"time": 0, "eye": [0, 1, 3], "target": [0, 0, 0]}]})";
     auto nope = runVct("render " + kScene + " --size 16 --path " + named + " --frames 2 -o " + dir + "/n/f.png");
     EXPECT_EQ(nope.exitCode, 2) << nope.output;
-    EXPECT_NE(nope.output.find("animation 'nope' moves no camera or light"), std::string::npos) << nope.output;
+    EXPECT_NE(nope.output.find("animation 'nope' moves no camera, light or object"), std::string::npos) << nope.output;
     EXPECT_FALSE(fs::exists(dir + "/n"));
 }
 
@@ -142,4 +142,18 @@ TEST(SequenceCli, AMovingLightRerunsInjectionOnlyAndThePlanSaysSo) {
     EXPECT_NE(r.output.find("the voxels themselves are kept"), std::string::npos) << r.output;
     // The light moves: the frames differ.
     EXPECT_NE(bytesOf(dir + "/f_0000.png"), bytesOf(dir + "/f_0002.png"));
+}
+
+TEST(SequenceCli, AMovingObjectRebuildsItsSceneAndThePlanSaysSo) {
+    const std::string dir = freshTempDir("seq_object");
+    auto r = runVct("render scenes/cornell_moving_box.gltf --size 24 --ao vct --voxel-res 16 --radius 0.5 --explain "
+                    "--path scenes/paths/cornell_box_slide.json --frames 3 --stats " + dir + "/s.json -o " + dir +
+                    "/f.png");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("objects move with animation 'box_slide'"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("rebuilt in full"), std::string::npos) << r.output;
+    EXPECT_NE(bytesOf(dir + "/f_0000.png"), bytesOf(dir + "/f_0002.png")) << "the box moved but the frames did not";
+    auto info = runVct("info scenes/cornell_moving_box.gltf");
+    ASSERT_EQ(info.exitCode, 0) << info.output;
+    EXPECT_NE(info.output.find("object animations: 0 'box_slide' (node"), std::string::npos) << info.output;
 }

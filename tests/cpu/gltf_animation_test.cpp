@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -262,7 +263,7 @@ TEST(GltfAnimation, KeyTimesOfEveryChannelAreSampled) {
 TEST(GltfAnimation, AnimationsThatMoveNoCameraAreIgnoredUnchecked) {
     AnimatedModel m;
     m.animate("spin box", m.boxNode, "translation", {0.f, 1.f}, {0, 0, 0, 0, 1, 0});
-    // Decreasing times, but on the box: not read, so the file loads as before.
+    // Decreasing times, but on the box: named as malformed, not a camera path; the file loads.
     m.animate("broken box", m.boxNode, "translation", {1.f, 0.f}, {0, 0, 0, 0, 1, 0});
     m.animate("morph", m.cameraNode, "weights", {0.f, 1.f}, {0.f, 1.f});
     const Scene s = m.load();
@@ -380,14 +381,90 @@ TEST(GltfAnimation, ALightsNodeAnimationPosesTheLight) {
     expectNear(s.lights[0].position, glm::vec3(2.f, 3.f, 0.f));
 }
 
-// Animations of geometry are named with what they move, so a sequence can refuse them.
-TEST(GltfAnimation, AnimationsThatMoveGeometryAreNamed) {
+// Objects: a rigid animation of a mesh node becomes a mesh track, which poses the node's
+// vertices at any time from their rest pose (exact at the samples, the node's rotation slerped
+// between them), holds them at the ends, and leaves them alone when nothing changed.
+TEST(GltfAnimation, ARigidObjectAnimationPosesItsVertices) {
     AnimatedModel m;
     m.animate("slide", m.boxNode, "translation", {0.f, 1.f}, {0.f, 0.f, 0.f, 1.f, 0.f, 0.f});
     m.animate("sweep", m.lampNode, "translation", {0.f, 1.f}, {0.f, 3.f, 0.f, 1.f, 3.f, 0.f});
+    Scene s = m.load();
+    EXPECT_TRUE(s.geometryAnimations.empty());
+    ASSERT_EQ(s.meshAnimations.size(), 1u);
+    const vct::MeshAnimationTrack& track = s.meshAnimations[0];
+    EXPECT_EQ(track.name, "slide");
+    EXPECT_EQ(track.nodeName, "node 0 'box'");
+    ASSERT_EQ(track.restPositions.size(), s.positions.size());  // the box is the only mesh
+    EXPECT_TRUE(vct::animationMovesGeometry(s, "slide"));
+    EXPECT_FALSE(vct::animationMovesGeometry(s, "sweep"));
+    EXPECT_NE(vct::describeMeshAnimations(s).find("'slide' (node 0 'box', 24 vertices, 0..1 s"), std::string::npos)
+        << vct::describeMeshAnimations(s);
+    const std::vector<glm::vec3> rest = s.positions, restNormals = s.normals;
+
+    EXPECT_EQ(vct::poseMeshes(s, "slide", 0.3), 1);
+    for (size_t v = 0; v < rest.size(); ++v) {
+        expectNear(s.positions[v], rest[v] + glm::vec3(0.3f, 0.f, 0.f));
+        expectNear(s.normals[v], restNormals[v]);
+    }
+    EXPECT_EQ(vct::poseMeshes(s, "slide", 0.3), 0) << "the same pose again changed the vertices";
+    EXPECT_EQ(vct::poseMeshes(s, "sweep", 0.6), 0);
+    EXPECT_EQ(vct::poseMeshes(s, "slide", 7.0), 1);
+    for (size_t v = 0; v < rest.size(); ++v) expectNear(s.positions[v], rest[v] + glm::vec3(1.f, 0.f, 0.f));
+    const vct::AnimationPose both = vct::poseAnimation(s, "slide", 0.0);
+    EXPECT_EQ(both.meshesMoved, 1);
+    EXPECT_EQ(both.lightsMoved, 0);
+    for (size_t v = 0; v < rest.size(); ++v) expectNear(s.positions[v], rest[v]);
+
+    // The bounds a sequence keeps hold every pose: the box spans x in [-1, 2] over the slide.
+    const vct::Bounds3 swept = vct::animationBounds(s, "slide");
+    EXPECT_NEAR(swept.min.x, -1.f, 1e-5f);
+    EXPECT_NEAR(swept.max.x, 2.f, 1e-5f);
+    EXPECT_NEAR(swept.max.y, s.bounds.max.y, 1e-5f);
+    EXPECT_NEAR(vct::animationBounds(s, "sweep").max.x, s.bounds.max.x, 1e-6f);
+}
+
+TEST(GltfAnimation, ARotatingObjectTurnsItsVerticesAndNormals) {
+    AnimatedModel m;
+    m.animate("turn", m.boxNode, "rotation", {0.f, 1.f}, concat(aboutY(0.f), aboutY(90.f)));
+    Scene s = m.load();
+    ASSERT_EQ(s.meshAnimations.size(), 1u);
+    const std::vector<glm::vec3> rest = s.positions, restNormals = s.normals;
+    // 0.23 s lies between two dense samples: slerp of a uniform turn is the turn itself.
+    for (double t : {0.5, 0.23}) {
+        ASSERT_EQ(vct::poseMeshes(s, "turn", t), 1);
+        const float a = glm::radians(90.f * float(t));
+        auto turned = [&](const glm::vec3& p) {
+            return glm::vec3(std::cos(a) * p.x + std::sin(a) * p.z, p.y, -std::sin(a) * p.x + std::cos(a) * p.z);
+        };
+        for (size_t v = 0; v < rest.size(); ++v) {
+            expectNear(s.positions[v], turned(rest[v]), 1e-4f);
+            expectNear(s.normals[v], turned(restNormals[v]), 1e-4f);
+        }
+    }
+}
+
+// Animations that deform geometry (morph weights, a skin's joints) or that are malformed where
+// they move an object are named with what they do, so a sequence can refuse them; the file's
+// still renders load as before.
+TEST(GltfAnimation, DeformingOrMalformedObjectAnimationsAreNamed) {
+    AnimatedModel m;
+    m.animate("morph", m.boxNode, "weights", {0.f, 1.f}, {0.f, 1.f});
+    m.animate("broken", m.boxNode, "translation", {1.f, 0.f}, {0.f, 0.f, 0.f, 1.f, 0.f, 0.f});
+    tinygltf::Node joint;
+    joint.name = "joint";
+    m.model.nodes.push_back(joint);
+    const int jointNode = int(m.model.nodes.size()) - 1;
+    m.model.scenes[0].nodes.push_back(jointNode);
+    tinygltf::Skin skin;
+    skin.joints = {jointNode};
+    m.model.skins.push_back(skin);
+    m.animate("wave", jointNode, "translation", {0.f, 1.f}, {0.f, 0.f, 0.f, 0.f, 1.f, 0.f});
     const Scene s = m.load();
-    ASSERT_EQ(s.geometryAnimations.size(), 1u);
-    EXPECT_EQ(s.geometryAnimations[0].first, "slide");
-    EXPECT_NE(s.geometryAnimations[0].second.find("'box', which carries a mesh"), std::string::npos)
-        << s.geometryAnimations[0].second;
+    EXPECT_TRUE(s.meshAnimations.empty()) << vct::describeMeshAnimations(s);
+    std::map<std::string, std::string> named(s.geometryAnimations.begin(), s.geometryAnimations.end());
+    ASSERT_EQ(named.size(), 3u);
+    EXPECT_NE(named["morph"].find("morph target weights of node 0 'box'"), std::string::npos) << named["morph"];
+    EXPECT_NE(named["broken"].find("malformed"), std::string::npos) << named["broken"];
+    EXPECT_NE(named["broken"].find("not strictly increasing"), std::string::npos) << named["broken"];
+    EXPECT_NE(named["wave"].find("'joint', a joint of a skin"), std::string::npos) << named["wave"];
 }
