@@ -20,6 +20,7 @@ void main() {
     float ao = 1.0;
     vec2 counts = vec2(0.0);
     if (cone_surface(pix, p, n, ng)) {
+        cone_jitterPixel(pix);
         ConeGather g = cone_gather(p, n, ng, u.limits.x, u.limits.z, 0.0);
         ao = clamp(1.0 - g.occlusion, 0.0, 1.0);
         counts = vec2(g.samples, cone_fetches);

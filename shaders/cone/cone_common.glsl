@@ -46,12 +46,25 @@ struct ConeGather {
 // count them): with the samples, the cone pass's cost in units a GPU can be reasoned in.
 float cone_fetches = 0.0;
 
+// The turn of the cone set about the normal (vct.jitter), set by a pixel pass before its
+// gather; 0 keeps the set as it is (bounces never turn it).
+float cone_rotation = 0.0;
+
+// Sets cone_rotation for pixel `pix` when the pass jitters its cones.
+void cone_jitterPixel(ivec2 pix) {
+    if (u.image.z != 0) cone_rotation = cone_jitterAngle(uint(pix.x), uint(pix.y), uint(u.image.w));
+}
+
 // The gather from voxel-space point p (the surface point, or a voxel centre for bounces);
 // the cones start `offset` voxels along ng, and `h0` is that start's height above the
 // tangent plane for the plane limit.
 ConeGather cone_gatherVoxel(vec3 p, vec3 n, vec3 ng, float offset, float h0, float maxDist, float falloff,
                             float sky) {
     mat3 frame = frame_fromZ(n);
+    if (cone_rotation != 0.0) {
+        float c = cos(cone_rotation), s = sin(cone_rotation);
+        frame = frame * mat3(c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0);  // about the frame's z = n
+    }
     ConeMarch m = cone_uniformMarch();
     vec3 origin = p + ng * offset;
     ConeGather g;

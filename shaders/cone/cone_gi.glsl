@@ -22,6 +22,7 @@ void main() {
     vec4 result = vec4(0.0);
     vec2 counts = vec2(0.0);
     if (cone_surface(pix, p, n, ng)) {
+        cone_jitterPixel(pix);
         vec3 albedo = max(texelFetch(gbufAlbedo, pix, 0).rgb, vec3(0.0));
         ConeGather g = cone_gather(p, n, ng, u.limits.x, 0.0, u.limits.y);
         result = vec4(albedo * g.radiance, 1.0);

@@ -86,7 +86,7 @@ struct ConeUniforms {
                            // w = plane-limit ratio (0 = off)
     vec4 camera;           // x = tan(yfov / 2) * aspect, y = tan(yfov / 2), z = ray step (voxels), w unused
     ivec4 config;          // x = cone count, y = AO mapping, z = mip level (rayMarch), w = channel (rayMarch)
-    ivec4 image;           // x = width, y = height
+    ivec4 image;           // x = width, y = height, z = cone jitter (1: rotate per pixel), w = its seed
     vec4 cones[CONE_MAX_CONES];  // xyz = direction in the tangent frame (z = normal), w = weight
 };
 
@@ -109,6 +109,22 @@ CONE_FN vec4 cone_blendDirectional(vec3 w, vec4 x, vec4 y, vec4 z) {
     float aLinear = dot(w, alpha);
     vec3 c = w.x * vec3(x) + w.y * vec3(y) + w.z * vec3(z);
     return vec4(aLinear > 1.0e-6f ? c * (a / aLinear) : c, a);
+}
+
+// vct.jitter: the angle in [0, 2 pi) by which pixel (x, y) (GL's, bottom row 0) turns the cone
+// set about its normal, from a PCG hash (O'Neill) of the pixel and the seed. A fixed set draws
+// the same few directions at every pixel, so a wall's occluders show as streaks along them; a
+// turn per pixel spreads the set over the azimuth and the streaks become noise a filter or
+// temporal accumulation can average (a new seed per frame gives a new pattern). Shared so the
+// cone-model reference turns its cones as the cone passes do.
+CONE_FN uint cone_pcg(uint v) {
+    uint state = v * 747796405u + 2891336453u;
+    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+CONE_FN float cone_jitterAngle(uint x, uint y, uint seed) {
+    uint h = cone_pcg(x ^ cone_pcg(y ^ cone_pcg(seed)));
+    return 6.28318530717958647692f * float(h >> 8u) * (1.0f / 16777216.0f);
 }
 
 VCT_END_NAMESPACE

@@ -63,7 +63,7 @@ bool bindGridTextures(bool gi, const VoxelGrid& grid, const ConeSettings& settin
 BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffer, float maxDistWorld, float sky,
                            const ConeSettings& settings) {
     gpu::ConeUniforms u = coneUniforms(gi, grid, maxDistWorld, sky, settings);
-    u.image = glm::ivec4(gbuffer.width, gbuffer.height, 0, 0);
+    u.image = glm::ivec4(gbuffer.width, gbuffer.height, settings.jitter ? 1 : 0, int(settings.seed));
     BoundConePass bound;
     bound.ubo = bindConeUniforms(u);
     bindGBufferTextures(gbuffer);  // the shaders texelFetch position, normal, geomNormal, albedo

@@ -76,6 +76,10 @@ const SettingsTable<ConeSettings>& coneSettings() {
                      "and solid angle shared); 0 = auto, (voxel res / 32)^2, so a lane's footprint stays the same "
                      "number of voxels as the grid refines and the march converges to the cone's exact visibility "
                      "(cost grows with the lanes)")
+            .flag("vct.jitter", &ConeSettings::jitter,
+                  "turn the cone set about the normal by an angle per pixel drawn from the seed: the fixed set's "
+                  "streaks become noise (a new pattern per seed, so per frame with per-frame seeds); 0 keeps one "
+                  "set for every pixel (dense grid and clipmap; not the sparse backend)")
             .check([](const ConeSettings& s) {
                 if (s.lanes * s.coneCount > gpu::CONE_MAX_CONES)
                     throw UsageError("--param vct.lanes=" + std::to_string(s.lanes) + ": " + std::to_string(s.lanes) +

@@ -2,7 +2,7 @@
 // their reasons live in shaders/cone/cone_shared.h (CONE_DEFAULT_*).
 //
 // Keys, defaults, ranges and docs: coneSettings() (vct.cones, vct.aperture, vct.step,
-// vct.offset, vct.max-alpha, vct.aniso, vct.ao-mapping, vct.plane-limit, vct.lanes).
+// vct.offset, vct.max-alpha, vct.aniso, vct.ao-mapping, vct.plane-limit, vct.lanes, vct.jitter).
 //
 // AO mappings: `linear` A = 1 - sum_c w_c alpha_c, where alpha_c is cone c's opacity
 // accumulated within R; with cosine-lobe weights w_c this estimates A_R, the cosine-weighted
@@ -16,6 +16,7 @@
 
 #include "core/settings.h"
 
+#include <cstdint>
 #include <string>
 
 namespace vct {
@@ -32,6 +33,8 @@ struct ConeSettings {
     ConeAoMapping aoMapping = ConeAoMapping::Linear;
     bool planeLimit = true;         // limit the footprint by the height above the tangent plane
     int lanes = 1;                  // lanes per cone (cone/cone_set.h); 0 = auto, (res / 32)^2
+    bool jitter = false;            // turn the set about the normal per pixel (cone_jitterAngle)
+    uint32_t seed = 0;              // the render's seed, for the jitter: set by the caller, not a --param
 
     // Throws InternalError naming the field if a value is outside its range.
     void validate() const;
@@ -46,6 +49,8 @@ const SettingsTable<ConeSettings>& coneSettings();
 // of vct.cones split into vct.lanes lanes (cone/cone_set.h).
 struct ConeLanes coneMarchLanes(const ConeSettings& s, int maxResolution);
 ConeSettings readConeSettings(const ParamMap& params);  // coneSettings().read(params)
+// ConeSettings::seed from a render's 64-bit seed (both halves folded in).
+inline uint32_t coneJitterSeed(uint64_t seed) { return uint32_t(seed) ^ uint32_t(seed >> 32); }
 
 std::string toString(ConeAoMapping m);
 

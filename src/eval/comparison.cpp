@@ -278,7 +278,7 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
         c.aovs = {"ao"};
         c.params.set("reference.cone-model", "1");
         std::string key;
-        for (const char* k : {"vct.cones", "vct.aperture"}) {
+        for (const char* k : {"vct.cones", "vct.aperture", "vct.jitter"}) {
             std::string value;
             if (auto it = v.params.find(k); it != v.params.end()) value = it->second;
             else if (s.base.params.has(k)) value = s.base.params.values().at(k);

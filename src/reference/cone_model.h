@@ -33,16 +33,26 @@ public:
     }
     bool empty() const { return mCones.empty(); }
 
+    // vct.jitter: point i's cone set turned about its normal by rotations[i] radians
+    // (cone_jitterAngle of its pixel), as the cone passes turn it; empty: no turn.
+    void setRotations(std::vector<float> rotations) { mRotations = std::move(rotations); }
+    float rotationOf(size_t point) const { return point < mRotations.size() ? mRotations[point] : 0.f; }
+
     // u in [0, 1)^2; n the shading normal (the cone set's frame, as the cone passes take it),
-    // ng the geometric normal.
-    ConeModelSample sample(glm::vec2 u, const glm::vec3& n, const glm::vec3& ng) const {
+    // ng the geometric normal; `rotation` turns the set about n (cone_common.glsl's frame).
+    ConeModelSample sample(glm::vec2 u, const glm::vec3& n, const glm::vec3& ng, float rotation = 0.f) const {
         size_t c = 0;
         while (c + 1 < mCdf.size() && u.x >= mCdf[c]) ++c;
         // Reuse the first coordinate within the chosen cone's interval, so the 2D point set
         // stays stratified.
         const float lo = c == 0 ? 0.f : mCdf[c - 1];
         const float ux = (u.x - lo) / std::max(mCdf[c] - lo, 1e-12f);
-        const glm::vec3 axis = glm::normalize(gpu::frame_fromZ(n) * glm::vec3(mCones[c]));
+        glm::mat3 frame = gpu::frame_fromZ(n);
+        if (rotation != 0.f) {
+            const float cr = std::cos(rotation), sr = std::sin(rotation);
+            frame = frame * glm::mat3(cr, sr, 0.f, -sr, cr, 0.f, 0.f, 0.f, 1.f);
+        }
+        const glm::vec3 axis = glm::normalize(frame * glm::vec3(mCones[c]));
         ConeModelSample s;
         if (glm::dot(axis, ng) <= 0.f) {
             s.closed = true;
@@ -58,6 +68,7 @@ public:
 private:
     std::vector<glm::vec4> mCones;
     std::vector<float> mCdf;
+    std::vector<float> mRotations;
     float mCosHalf = 1.f;
 };
 

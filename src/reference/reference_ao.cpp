@@ -175,7 +175,7 @@ ReferenceAO referenceAO(const EmbreeScene& scene, const std::vector<SurfacePoint
                         w = ps.frame.toWorld(sampleCosineHemisphere(u));
                         if (glm::dot(w, ps.geomNormal) <= 0.f) continue;  // below the surface: occluded
                     } else {
-                        const ConeModelSample cs = cones.sample(u, ps.frame.z, ps.geomNormal);
+                        const ConeModelSample cs = cones.sample(u, ps.frame.z, ps.geomNormal, cones.rotationOf(i));
                         if (cs.closed) continue;
                         if (cs.belowPlane) {
                             visit(owner, true);

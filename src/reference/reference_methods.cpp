@@ -42,6 +42,16 @@ void executeAo(MethodContext& ctx) {
         if (settings.pixelArea) throw UsageError("--param reference.cone-model=1 needs reference.pixel=center");
         const ConeSettings c = readConeSettings(ctx.request.params);
         cones = ConeModelSampler(diffuseConeSet(c.coneCount), c.apertureDeg);
+        if (c.jitter) {
+            // The points run top row first; the cone passes' pixels are GL's, bottom row 0.
+            const int w = ctx.gbuffer->width, h = ctx.gbuffer->height;
+            const uint32_t seed = coneJitterSeed(ctx.request.seed);
+            std::vector<float> rotations(size_t(w) * size_t(h));
+            for (int row = 0; row < h; ++row)
+                for (int x = 0; x < w; ++x)
+                    rotations[size_t(row) * size_t(w) + size_t(x)] = gpu::cone_jitterAngle(uint32_t(x), uint32_t(h - 1 - row), seed);
+            cones.setRotations(std::move(rotations));
+        }
     }
     const EmbreeScene& embree = sessionEmbreeScene(ctx);
     auto scope = ctx.timer.scope("reference_ao", false);

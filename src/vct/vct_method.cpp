@@ -61,6 +61,7 @@ std::string coneExplanation(const RenderRequest& r) {
     if (lanes > 1)
         s += ", each marched as " + std::to_string(lanes) + " lanes" +
              (c.lanes == 0 ? " (vct.lanes=auto at " + std::to_string(r.voxelRes) + "^3)" : " (vct.lanes)");
+    if (c.jitter) s += ", turned about the normal per pixel (vct.jitter, from the seed)";
     return s;
 }
 
@@ -105,9 +106,13 @@ void traceVoxelViews(MethodContext& ctx, const VoxelGrid& grid) {
 void executeVct(MethodContext& ctx, MethodKind kind) {
     if (!ctx.plan.runs(kPassVoxelize)) return;
     const RenderRequest& r = ctx.request;
-    const ConeSettings cone = readConeSettings(r.params);
+    ConeSettings cone = readConeSettings(r.params);
+    cone.seed = coneJitterSeed(r.seed);
     VctSession& session = ctx.session.get<VctSession>("vct");
     if (r.backend == "vdb") {
+        if (cone.jitter)
+            throw UsageError("--param vct.jitter=1: the sparse backend (--backend vdb) traces one fixed cone set; "
+                             "use --backend gl");
         traceSparse(ctx, kind, sparseFrameFor(ctx, session.sparse, cone), cone);
         return;
     }

@@ -1,5 +1,6 @@
 // Comparisons along camera paths (eval/sequence_comparison.h) on a box on a floor: a still path
-// leaves a deterministic method unchanged and a re-seeded one flickering; a pan leaves the
+// leaves a deterministic method unchanged and a re-seeded one (SSAO's kernel, VCT's cone set
+// turned per pixel by vct.jitter) flickering; a pan leaves the
 // reference's AO (which does not depend on the camera) changed by its noise only, which is what
 // the reprojection must give; the records carry what the tables need.
 #include "eval/sequence_comparison.h"
@@ -58,7 +59,8 @@ const nlohmann::json& recordOf(const nlohmann::json& doc, const std::string& lab
 TEST(Sequence, AStillPathLeavesDeterministicMethodsUnchangedAndReseededOnesFlicker) {
     const vct::Scene scene = boxOnFloor();
     const glm::vec3 eye(2.5f, 2.f, 3.f);
-    vct::SequenceSettings s = settingsFor(pathThrough({eye, eye}, glm::vec3(0, 0.3f, 0)), 3, "vct,ssao-hemisphere");
+    vct::SequenceSettings s = settingsFor(pathThrough({eye, eye}, glm::vec3(0, 0.3f, 0)), 3,
+                                             "vct,ssao-hemisphere,vct[vct.jitter=1]");
     s.comparison.referenceSpp = 128;
     nlohmann::json doc = vct::runSequenceComparison(scene, s);
     const nlohmann::json& v = recordOf(doc, "vct");
@@ -76,6 +78,10 @@ TEST(Sequence, AStillPathLeavesDeterministicMethodsUnchangedAndReseededOnesFlick
     // beyond what the score resolves.
     EXPECT_GT(ssao["temporal"]["change_rms"].get<double>(), 0.003);
     EXPECT_GT(ssao["instability"].get<double>(), 2.0 * ssao["temporal"]["resolution"].get<double>());
+    // So does VCT whose cone set turns per pixel with the frame's seed: the same voxels, a new set.
+    const nlohmann::json& jittered = recordOf(doc, "vct[vct.jitter=1]");
+    EXPECT_GT(jittered["temporal"]["change_rms"].get<double>(), 0.003);
+    EXPECT_GT(jittered["instability"].get<double>(), 2.0 * jittered["temporal"]["resolution"].get<double>());
     // Per-frame figures for every frame, instability per frame pair.
     EXPECT_EQ(v["per_frame"]["rmse"].size(), 3u);
     EXPECT_EQ(v["per_frame"]["instability"].size(), 2u);
@@ -87,6 +93,7 @@ TEST(Sequence, AStillPathLeavesDeterministicMethodsUnchangedAndReseededOnesFlick
     s.perFrameSeeds = false;
     nlohmann::json fixed = vct::runSequenceComparison(scene, s);
     EXPECT_EQ(recordOf(fixed, "ssao-hemisphere")["temporal"]["change_rms"].get<double>(), 0.0);
+    EXPECT_EQ(recordOf(fixed, "vct[vct.jitter=1]")["temporal"]["change_rms"].get<double>(), 0.0);
 }
 
 TEST(Sequence, APanChangesTheReferenceByItsNoiseOnly) {
