@@ -32,10 +32,9 @@ ClipmapLayout computeClipmapLayout(const Bounds3& region, const glm::vec3& focus
             throw InternalError("computeClipmapLayout", "region or focus is not finite");
     ClipmapLayout c;
     c.levelCount = levelCount;
-    // A multiple of 4: level centres snap to 2 voxels, and half the resolution must stay even
-    // so every origin is a whole voxel of the next level (exact nesting). At least 32: level l
-    // then sits >= res/4 - 1.5 = 6.5 voxels of level l + 1 inside it, clear of that level's
-    // border margin and blend band (5 voxels), so the level of detail stays continuous.
+    // A multiple of 4, so half a level is a whole number of the next level's voxels. At least
+    // 32: level l then sits >= res/4 - 1.5 = 6.5 voxels of level l + 1 inside it, clear of that
+    // level's border margin and blend band (5 voxels), so the level of detail stays continuous.
     c.resolution = std::clamp((resolution + 3) / 4 * 4, 32, 512);
     c.region = region;
     c.focus = glm::clamp(focus, region.min, region.max);
@@ -52,7 +51,7 @@ ClipmapLayout computeClipmapLayout(const Bounds3& region, const glm::vec3& focus
     c.anchor = region.min - glm::vec3(0.5f * c.baseVoxelSize);
     auto snapped = [&](const glm::vec3& p, int level) {
         const glm::dvec3 index = glm::dvec3(p - c.anchor) / double(c.baseVoxelSize);
-        const double snap = double(1 << (level + 1));  // two voxels of the level: one of the next
+        const double snap = double(1 << level);  // one voxel of the level
         glm::ivec3 centre;
         for (int a = 0; a < 3; ++a) centre[a] = int(std::llround(index[a] / snap) * (long long)snap);
         return centre;
@@ -60,13 +59,13 @@ ClipmapLayout computeClipmapLayout(const Bounds3& region, const glm::vec3& focus
     c.originIndex.assign(size_t(levelCount), glm::ivec3(0));
     const int top = levelCount - 1;
     c.originIndex[size_t(top)] = snapped(region.center(), top) - glm::ivec3((c.resolution / 2) << top);
-    // Finer levels centre on the focus in steps of two of their voxels, kept inside the next
+    // Finer levels centre on the focus in steps of one of their voxels, kept inside the next
     // coarser level clear of its border margin and blend band (its level of detail stays
-    // continuous); the clamp moves in the same steps, so nesting stays exact.
+    // continuous). Nesting needs no alignment of the origins: the lattice is shared.
     for (int l = top - 1; l >= 0; --l) {
-        const int step = 1 << (l + 1);
+        const int parentVoxel = 1 << (l + 1);
         const int span = c.resolution << l;
-        const int room = int(std::ceil(gpu::CLIPMAP_BORDER_MARGIN + gpu::CLIPMAP_BLEND_WIDTH + 1.f)) * step;
+        const int room = int(std::ceil(gpu::CLIPMAP_BORDER_MARGIN + gpu::CLIPMAP_BLEND_WIDTH + 1.f)) * parentVoxel;
         const glm::ivec3 parent = c.originIndex[size_t(l + 1)];
         const int parentSpan = c.resolution << (l + 1);
         glm::ivec3 origin = snapped(c.focus, l) - glm::ivec3(span / 2);
@@ -86,19 +85,29 @@ glm::vec3 clipmapFocus(const Bounds3& region, const Camera& camera, int levelCou
 
 namespace {
 
-// Level `fine`'s mip 1 into level `coarse`'s base where they overlap (clipmap_nest.glsl).
-void nestLevel(const VoxelGrid& fine, VoxelGrid& coarse, const glm::ivec3& offset) {
+// The mean of level `fine`'s voxels into each voxel of level `coarse` they fill
+// (clipmap_nest.glsl). `fineOrigin` is the fine level's voxel 0 in fine voxels from the coarse
+// level's voxel 0, so coarse voxel c holds fine voxels 2c - fineOrigin and the next one per axis:
+// with an odd origin, the coarse voxels at both ends are only half filled and keep their own.
+void nestLevel(const VoxelGrid& fine, VoxelGrid& coarse, const glm::ivec3& fineOrigin) {
+    glm::ivec3 first, count;
+    for (int a = 0; a < 3; ++a) {
+        first[a] = (fineOrigin[a] + 1) >> 1;  // ceil(fineOrigin / 2), fineOrigin >= 0 inside the parent
+        const int last = (fine.resolution[a] - 2 + fineOrigin[a]) >> 1;
+        count[a] = std::max(0, last - first[a] + 1);
+    }
+    if (count.x == 0 || count.y == 0 || count.z == 0) return;
     auto copy = [&](const GlTexture& src, const GlTexture& dst) {
         const GLenum format = textureInternalFormat(dst.id());
         const GLuint p = cachedProgram(clipmapNestProgramKey(format));
-        const glm::ivec3 size = glm::max(fine.resolution / 2, glm::ivec3(1));
-        setUniform(p, "uFineSize", size);
-        setUniform(p, "uOffset", offset);
+        setUniform(p, "uCount", count);
+        setUniform(p, "uCoarseFirst", first);
+        setUniform(p, "uFineFirst", 2 * first - fineOrigin);
         glBindTextureUnit(0, src.id());
         bindImage3D(0, dst.id(), 0, GL_WRITE_ONLY, format);
         glUseProgram(p);
         const int g = gpu::VOX_GRID_GROUP;
-        glDispatchCompute(groupCount(size.x, g), groupCount(size.y, g), groupCount(size.z, g));
+        glDispatchCompute(groupCount(count.x, g), groupCount(count.y, g), groupCount(count.z, g));
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     };
     copy(fine.opacity, coarse.opacity);
@@ -133,9 +142,10 @@ Clipmap buildClipmap(const GpuScene& gpuScene, const Scene& scene, const Clipmap
     for (int l = 0; l < n; ++l) {
         if (l > 0) {
             auto scope = timer.scope("nest_l" + std::to_string(l), true, Reruns::WhenSceneChanges);
-            // Level l-1's mip-1 voxel 0 in level l's voxels (origins differ by whole voxels of l).
-            const glm::ivec3 offset = (layout.originIndex[size_t(l - 1)] - layout.originIndex[size_t(l)]) / (1 << l);
-            nestLevel(cm.levels[size_t(l - 1)], cm.levels[size_t(l)], offset);
+            // Level l-1's voxel 0 in its own voxels from level l's (origins are whole voxels of l-1).
+            const glm::ivec3 fineOrigin =
+                (layout.originIndex[size_t(l - 1)] - layout.originIndex[size_t(l)]) / (1 << (l - 1));
+            nestLevel(cm.levels[size_t(l - 1)], cm.levels[size_t(l)], fineOrigin);
         }
         buildMips(cm.levels[size_t(l)], false, timer, "mips_l" + std::to_string(l));
     }

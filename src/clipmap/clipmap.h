@@ -1,8 +1,9 @@
 // Clipmap cascades for voxel cone tracing: `levelCount` nested cubic grids of one resolution,
 // level l with voxels 2^l times level 0's, all centred (to a voxel) on a focus point near the
 // camera, the coarsest one covering the whole region. Each level is voxelized and injected on
-// its own (VoxelGrid of src/voxelize, with its own isotropic mips); then, finest first, level
-// l's mip 1 replaces level l + 1's base voxels where they overlap (clipmap_nest.glsl), so a
+// its own (VoxelGrid of src/voxelize, with its own isotropic mips); then, finest first, the
+// mean of level l's eight voxels under each voxel of level l + 1 that they fill replaces that
+// voxel (clipmap_nest.glsl: level l's mip 1 where the two lattices pair up), so a
 // cone sees one consistent pyramid: a dense grid at level 0's resolution near the focus,
 // coarser further out. Radiance stays per-area (no voxel-size factor), and the nesting makes
 // a level switch change nothing, so brightness does not depend on the number of levels.
@@ -28,8 +29,9 @@
 
 namespace vct {
 
-// Where the levels lie. Level origins are integer multiples of level 0's voxel size from
-// `anchor` (exact nesting: level l's voxels pair up inside level l + 1's).
+// Where the levels lie. Level l's origin is a whole number of its own voxels from `anchor`,
+// so every level's voxels lie on one lattice fixed to the region: eight voxels of level l
+// fill each voxel of level l + 1 exactly, wherever the two origins stand.
 struct ClipmapLayout {
     int levelCount = 0;
     int resolution = 0;          // voxels per axis of every level (a multiple of 4)
@@ -46,9 +48,10 @@ struct ClipmapLayout {
 
 // Levels of `resolution` (rounded up to a multiple of 4, clamped to [32, 512]) on a lattice
 // that depends on `region` alone (voxel sizes and anchor): the coarsest level covers the region
-// from its centre, each finer one centres on `focus` (moved into `region` first) in steps of two
-// of its voxels, clamped inside the next coarser level. A focus that moves less than a step keeps
-// a level's voxels; a step moves them by whole voxels, never resamples them. levelCount in [1, 8].
+// from its centre, each finer one centres on `focus` (moved into `region` first) in steps of one
+// of its voxels, clamped inside the next coarser level. A focus that moves less than half a voxel
+// of a level keeps that level's voxels; a step moves them by one voxel, never resamples them.
+// levelCount in [1, 8].
 ClipmapLayout computeClipmapLayout(const Bounds3& region, const glm::vec3& focus, int levelCount, int resolution);
 
 // The point a camera's cascades centre on: a quarter of level 0's span ahead of the eye along

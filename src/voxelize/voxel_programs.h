@@ -20,7 +20,7 @@ ProgramKey injectProgramKey(GLenum radianceFormat, int outerLevels);
 ProgramKey isotropicMipProgramKey(GLenum radianceFormat, bool normals);
 // mip_aniso.glsl: one directional level from `srcFormat` (GL_R16F: the opacity base level).
 ProgramKey anisotropicMipProgramKey(GLenum srcFormat, GLenum dstFormat);
-// clipmap_nest.glsl: a finer level's mip 1 into a coarser level's base, in `dstFormat`.
+// clipmap_nest.glsl: a finer level's means into the coarser level's voxels they fill, in `dstFormat`.
 ProgramKey clipmapNestProgramKey(GLenum dstFormat);
 
 // Every variant the functions above can return for the formats the grids use.

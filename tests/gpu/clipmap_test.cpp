@@ -15,7 +15,7 @@
 
 using namespace vct;
 
-TEST(ClipmapLayout, LevelsNestExactlyAndCoverTheRegion) {
+TEST(ClipmapLayout, LevelsLieOnOneLatticeAndCoverTheRegion) {
     Bounds3 region;
     region.min = {-20.f, -1.f, -20.f};
     region.max = {20.f, 3.f, 20.f};
@@ -29,10 +29,12 @@ TEST(ClipmapLayout, LevelsNestExactlyAndCoverTheRegion) {
                 EXPECT_GE(coarse.max[a], region.max[a]);
             }
             for (int l = 0; l + 1 < levels; ++l) {
-                // Whole voxels of level l + 1 apart, and level l inside level l + 1 with room
-                // for the border margin and blend band of the finer level.
+                // Whole voxels of level l apart (one lattice: level l's voxels fill level l + 1's
+                // wherever it stands), and level l inside level l + 1 with room for the border
+                // margin and blend band of the finer level.
                 const glm::ivec3 d = c.originIndex[size_t(l)] - c.originIndex[size_t(l + 1)];
-                for (int a = 0; a < 3; ++a) EXPECT_EQ(d[a] % (1 << (l + 1)), 0);
+                for (int a = 0; a < 3; ++a) EXPECT_EQ(d[a] % (1 << l), 0);
+                for (int a = 0; a < 3; ++a) EXPECT_EQ(c.originIndex[size_t(l)][a] % (1 << l), 0);
                 // Whole voxels apart in the layout's integers; the world bounds round.
                 const float room = (gpu::CLIPMAP_BORDER_MARGIN + gpu::CLIPMAP_BLEND_WIDTH + 1.f) * c.voxelSize(l + 1) -
                                    1e-4f * c.voxelSize(l + 1);
