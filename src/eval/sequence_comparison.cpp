@@ -90,7 +90,9 @@ nlohmann::json runSequenceComparison(const Scene& scene, const SequenceSettings&
             else if (moved.lightsMoved) session.lightsChanged();
         }
         RenderRequest base = c.base;
-        base.camera = cameraOnPath(s.path, times[size_t(f)], scene);
+        // Near and far planes around the posed scene's bounds (those the animation sweeps), as
+        // `vct render --path` frames them.
+        base.camera = cameraOnPath(s.path, times[size_t(f)], posed);
         base.seed = frameSeed(c.base.seed, f);
         ReferenceFrame now;
         now.view = makeView(base.camera, base.width, base.height);
