@@ -6,6 +6,7 @@
 
 #include "core/errors.h"
 #include "eval/provenance.h"
+#include "eval/sequence_comparison.h"
 #include "gl/context.h"
 #include "render/render_spec.h"
 #include "render/renderer.h"
@@ -162,7 +163,7 @@ int runRenderSequence(const RenderOptions& o) {
 
     const bool lightsMove = !path.animation.empty() && animationMovesLights(scene, path.animation);
     const bool geometryMoves = !path.animation.empty() && animationMovesGeometry(scene, path.animation);
-    if (geometryMoves) scene.bounds = animationBounds(scene, path.animation);
+    if (geometryMoves) scene.bounds = animationBounds(scene, path.animation);  // bounds that hold every pose
     GlContext::shared(parseGlDevice(o.glDevice));
     RenderSession session(scene);
     const std::vector<double> times = pathFrameTimes(path, o.frames);
@@ -190,11 +191,7 @@ int runRenderSequence(const RenderOptions& o) {
         const std::string& name = files.frames[size_t(f)];
         removeStaleTemporaries(name);
         if (fs::exists(name)) continue;
-        if (lightsMove || geometryMoves) {
-            const AnimationPose moved = poseAnimation(scene, path.animation, times[size_t(f)]);
-            if (moved.meshesMoved) session.geometryChanged();
-            else if (moved.lightsMoved) session.lightsChanged();
-        }
+        poseSequenceFrame(session, scene, path.animation, times[size_t(f)]);
         RenderRequest r = base;
         r.camera = cameraOnPath(path, times[size_t(f)], scene);
         r.seed = o.frameSeeds == "fixed" ? base.seed : frameSeed(base.seed, f);

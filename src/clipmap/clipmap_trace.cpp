@@ -35,7 +35,7 @@ GlTexture traceClipmap(bool gi, const Clipmap& cm, const GBuffer& gbuffer, float
     const ClipmapLayout& layout = cm.layout;
     const VoxelGrid& base = cm.levels.front();
     gpu::ConeUniforms u = coneUniforms(gi, base, maxDistWorld, sky, settings);
-    u.image = glm::ivec4(gbuffer.width, gbuffer.height, settings.jitter ? 1 : 0, int(settings.seed));
+    u.image = conePixelImage(gbuffer, settings);
 
     gpu::ClipmapUniforms c{};
     for (int l = 0; l < layout.levelCount; ++l) {

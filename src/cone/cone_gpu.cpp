@@ -51,6 +51,10 @@ gpu::ConeUniforms coneUniforms(bool gi, const VoxelGrid& grid, float maxDistWorl
     return u;
 }
 
+glm::ivec4 conePixelImage(const GBuffer& gbuffer, const ConeSettings& settings) {
+    return glm::ivec4(gbuffer.width, gbuffer.height, settings.jitter ? 1 : 0, int(settings.seed));
+}
+
 bool bindGridTextures(bool gi, const VoxelGrid& grid, const ConeSettings& settings) {
     const bool aniso = useAniso(grid, settings);
     glBindTextureUnit(gpu::CONE_UNIT_OPACITY, gi ? grid.radiance.id() : grid.opacity.id());
@@ -63,7 +67,7 @@ bool bindGridTextures(bool gi, const VoxelGrid& grid, const ConeSettings& settin
 BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffer, float maxDistWorld, float sky,
                            const ConeSettings& settings) {
     gpu::ConeUniforms u = coneUniforms(gi, grid, maxDistWorld, sky, settings);
-    u.image = glm::ivec4(gbuffer.width, gbuffer.height, settings.jitter ? 1 : 0, int(settings.seed));
+    u.image = conePixelImage(gbuffer, settings);
     BoundConePass bound;
     bound.ubo = bindConeUniforms(u);
     bindGBufferTextures(gbuffer);  // the shaders texelFetch position, normal, geomNormal, albedo

@@ -28,6 +28,10 @@ GlBuffer bindConeUniforms(const gpu::ConeUniforms& u);
 gpu::ConeUniforms coneUniforms(bool gi, const VoxelGrid& grid, float maxDistWorld, float sky,
                                const ConeSettings& settings);
 
+// ConeUniforms::image of a pixel pass over `gbuffer`: its size, and the per-pixel turn of the
+// cone set (vct.jitter) with its seed.
+glm::ivec4 conePixelImage(const GBuffer& gbuffer, const ConeSettings& settings);
+
 // Binds the grid's textures a cone pass samples (opacity or radiance, normals for GI's
 // facing test, the directional mips when used); returns whether the directional mips are
 // used (the CONE_ANISO variant of the pass's program).

@@ -1,5 +1,6 @@
 #include "eval/sequence_comparison.h"
 
+#include "core/errors.h"
 #include "eval/image_io.h"
 #include "eval/metrics.h"
 #include "eval/provenance.h"
@@ -52,6 +53,15 @@ void checkSequenceSettings(const SequenceSettings& s) {
     if (s.path.keys.empty()) throw UsageError("--path " + s.path.source + ": the path has no keys");
 }
 
+void poseSequenceFrame(RenderSession& session, Scene& scene, const std::string& animation, double t) {
+    if (&scene != &session.scene())
+        throw InternalError("poseSequenceFrame", "the scene posed is not the one the session renders");
+    if (animation.empty()) return;
+    const AnimationPose moved = poseAnimation(scene, animation, t);
+    if (moved.meshesMoved) session.geometryChanged();
+    else if (moved.lightsMoved) session.lightsChanged();
+}
+
 nlohmann::json runSequenceComparison(const Scene& scene, const SequenceSettings& s) {
     const ComparisonSettings& c = s.comparison;
     auto say = [&](const std::string& line) {
@@ -71,11 +81,10 @@ nlohmann::json runSequenceComparison(const Scene& scene, const SequenceSettings&
     const bool anyGi = std::any_of(c.variants.begin(), c.variants.end(), [](auto& v) { return v.kind == "gi"; });
     const std::vector<double> times = pathFrameTimes(s.path, s.frames);
 
-    // The lights the path's animation moves are posed on a copy the session renders.
+    // The lights and objects the path's animation moves are posed on a copy the session
+    // renders, whose bounds hold every pose.
     Scene posed = scene;
-    const bool lightsMove = !s.path.animation.empty() && animationMovesLights(scene, s.path.animation);
-    const bool geometryMoves = !s.path.animation.empty() && animationMovesGeometry(scene, s.path.animation);
-    if (geometryMoves) posed.bounds = animationBounds(scene, s.path.animation);
+    if (!s.path.animation.empty()) posed.bounds = animationBounds(scene, s.path.animation);
     RenderSession session(posed);
     std::vector<VariantTrack> tracks;
     for (const MethodVariant& v : c.variants) tracks.push_back(VariantTrack{v, {}, {}, {}, {}, {}, 0.0, {}, {}});
@@ -84,11 +93,7 @@ nlohmann::json runSequenceComparison(const Scene& scene, const SequenceSettings&
     ReferenceFrame previous;
     for (int f = 0; f < s.frames; ++f) {
         say("frame " + std::to_string(f + 1) + "/" + std::to_string(s.frames));
-        if (lightsMove || geometryMoves) {
-            const AnimationPose moved = poseAnimation(posed, s.path.animation, times[size_t(f)]);
-            if (moved.meshesMoved) session.geometryChanged();
-            else if (moved.lightsMoved) session.lightsChanged();
-        }
+        poseSequenceFrame(session, posed, s.path.animation, times[size_t(f)]);
         RenderRequest base = c.base;
         // Near and far planes around the posed scene's bounds (those the animation sweeps), as
         // `vct render --path` frames them.

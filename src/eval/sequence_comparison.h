@@ -39,4 +39,11 @@ nlohmann::json runSequenceComparison(const Scene& scene, const SequenceSettings&
 
 std::string sequenceResultsCsv(const nlohmann::json& results);
 
+class RenderSession;
+// One frame's pose of a sequence whose path plays `animation` (nothing without one): poses
+// `scene`, the Scene `session` renders, at time t (scene/gltf_animation.h) and tells the
+// session what moved: moved objects drop everything built from the geometry, moved lights
+// only what they light.
+void poseSequenceFrame(RenderSession& session, Scene& scene, const std::string& animation, double t);
+
 }  // namespace vct

@@ -21,9 +21,26 @@
 
 namespace vct {
 
+namespace {
+
+// Key i of `keys` (times strictly increasing) with keys[i].time <= t < keys[i + 1].time, for t
+// strictly inside the keys' span: the interval a pose between two samples comes from.
+template <class Key>
+size_t keyIntervalAt(const std::vector<Key>& keys, double t) {
+    return size_t(std::upper_bound(keys.begin(), keys.end(), t, [](double x, const Key& key) { return x < key.time; }) -
+                  keys.begin()) - 1;
+}
+
+}  // namespace
+
 namespace gltf_detail {
 
 namespace {
+
+// The name tracks and messages give animation `index`: its own, or "animation<index>".
+std::string animationName(const tinygltf::Animation& anim, size_t index) {
+    return anim.name.empty() ? "animation" + std::to_string(index) : anim.name;
+}
 
 // Points sampled inside each interval between consecutive key times, so the path has 16
 // linear segments per interval: a camera turning 90 degrees in one interval then strays from
@@ -285,7 +302,7 @@ CameraAnimationTrack sampleTrack(const LoadContext& load, int animIndex, const L
     const tinygltf::Animation& anim = load.model.animations[size_t(animIndex)];
     const Camera& camera = load.scene.cameras[placed.sceneCamera];
     CameraAnimationTrack track;
-    track.name = anim.name.empty() ? "animation" + std::to_string(animIndex) : anim.name;
+    track.name = animationName(anim, size_t(animIndex));
     track.animation = animIndex;
     track.cameraName = camera.name;
     const std::string where = label("animation", animIndex, anim.name) + " (camera '" + camera.name + "')";
@@ -299,7 +316,7 @@ LightAnimationTrack sampleLightTrack(const LoadContext& load, int animIndex, con
     const tinygltf::Animation& anim = load.model.animations[size_t(animIndex)];
     const Light& light = load.scene.lights[placed.sceneLight];
     LightAnimationTrack track;
-    track.name = anim.name.empty() ? "animation" + std::to_string(animIndex) : anim.name;
+    track.name = animationName(anim, size_t(animIndex));
     track.animation = animIndex;
     track.light = placed.sceneLight;
     const std::string where = label("animation", animIndex, anim.name) + " (light '" + light.name + "')";
@@ -319,7 +336,7 @@ MeshAnimationTrack sampleMeshTrack(const LoadContext& load, int animIndex, const
                                    const std::vector<TrsChannel>& channels) {
     const tinygltf::Animation& anim = load.model.animations[size_t(animIndex)];
     MeshAnimationTrack track;
-    track.name = anim.name.empty() ? "animation" + std::to_string(animIndex) : anim.name;
+    track.name = animationName(anim, size_t(animIndex));
     track.animation = animIndex;
     track.nodeName = label("node", placed.node, load.model.nodes[size_t(placed.node)].name);
     const std::string where = label("animation", animIndex, anim.name) + " (" + track.nodeName + ")";
@@ -371,7 +388,7 @@ void findGeometryAnimations(LoadContext& load) {
     const tinygltf::Model& model = load.model;
     for (size_t a = 0; a < model.animations.size(); ++a) {
         const tinygltf::Animation& anim = model.animations[a];
-        const std::string name = anim.name.empty() ? "animation" + std::to_string(a) : anim.name;
+        const std::string name = animationName(anim, a);
         for (const tinygltf::AnimationChannel& ch : anim.channels) {
             if (ch.target_node < 0 || ch.target_node >= int(model.nodes.size())) continue;
             const tinygltf::Node& node = model.nodes[size_t(ch.target_node)];
@@ -408,7 +425,7 @@ void addMeshAnimations(LoadContext& load) {
         } catch (const SceneError& e) {
             const tinygltf::Animation& anim = load.model.animations[a];
             load.scene.geometryAnimations.push_back(
-                {anim.name.empty() ? "animation" + std::to_string(a) : anim.name,
+                {animationName(anim, a),
                  std::string("is malformed where it moves an object (") + e.what() + ")"});
             continue;
         }
@@ -453,9 +470,7 @@ int poseLights(Scene& scene, const std::string& animation, double t) {
         if (t >= k.back().time) {
             at = k.back();
         } else if (t > k.front().time) {
-            const size_t i = size_t(std::upper_bound(k.begin(), k.end(), t, [](double x, const LightAnimationKey& key) {
-                                        return x < key.time;
-                                    }) - k.begin()) - 1;
+            const size_t i = keyIntervalAt(k, t);
             const float u = float((t - k[i].time) / (k[i + 1].time - k[i].time));
             at.position = glm::mix(k[i].position, k[i + 1].position, u);
             const glm::vec3 d = glm::mix(k[i].direction, k[i + 1].direction, u);
@@ -476,9 +491,7 @@ glm::mat4 worldFromNodeAt(const MeshAnimationTrack& track, double t) {
     const std::vector<MeshAnimationKey>& k = track.keys;
     if (t <= k.front().time) return k.front().worldFromNode;
     if (t >= k.back().time) return k.back().worldFromNode;
-    const size_t i = size_t(std::upper_bound(k.begin(), k.end(), t, [](double x, const MeshAnimationKey& key) {
-                                return x < key.time;
-                            }) - k.begin()) - 1;
+    const size_t i = keyIntervalAt(k, t);
     if (t == k[i].time) return k[i].worldFromNode;
     const float u = float((t - k[i].time) / (k[i + 1].time - k[i].time));
     glm::vec3 scale[2], translation[2], skew;
