@@ -103,12 +103,7 @@ bool EmbreeScene::intersect(const glm::vec3& org, const glm::vec3& dir, float tn
                             uint32_t* triangle, float* u, float* v, float* t) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRayHit rh;
-    rh.ray.org_x = org.x; rh.ray.org_y = org.y; rh.ray.org_z = org.z; rh.ray.tnear = tnear;
-    rh.ray.dir_x = dir.x; rh.ray.dir_y = dir.y; rh.ray.dir_z = dir.z; rh.ray.time = 0.f;
-    rh.ray.tfar = tfar; rh.ray.mask = 0xFFFFFFFFu; rh.ray.id = 0; rh.ray.flags = 0;
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    RTCRayHit rh = rayHit(org, dir, tnear, tfar);
     rtcIntersect1(mScene, &context, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
     *triangle = rh.hit.primID;
@@ -116,6 +111,13 @@ bool EmbreeScene::intersect(const glm::vec3& org, const glm::vec3& dir, float tn
     *v = rh.hit.v;
     *t = rh.ray.tfar;
     return true;
+}
+
+void EmbreeScene::intersectCoherent(RTCRayHit* rays, unsigned count) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    rtcIntersect1M(mScene, &context, rays, count, sizeof(RTCRayHit));
 }
 
 bool EmbreeScene::occluded(const glm::vec3& org, const glm::vec3& dir, float tfar) const {

@@ -50,6 +50,10 @@ class EmbreeScene {
     bool intersect(const glm::vec3& org, const glm::vec3& dir, float tnear, float tfar, uint32_t* triangle,
                    float* u, float* v, float* t) const;
     bool occluded(const glm::vec3& org, const glm::vec3& dir, float tfar) const;
+    // Closest hits of `count` rays that start together and point nearly the same way (the
+    // samples of one pixel), traced as one coherent stream: Embree packs them into packets
+    // that share their BVH traversal. Each ray's hit is set as rtcIntersect1 would set it.
+    void intersectCoherent(RTCRayHit* rays, unsigned count) const;
 
     SurfaceHit surfaceAt(uint32_t triangle, float u, float v, const glm::vec3& incomingDir) const;
 
@@ -60,6 +64,17 @@ class EmbreeScene {
     std::vector<float> mVertices;  // xyz per vertex + 1 float of padding at the end
     float mSceneMaxAbs = 0.f;
 };
+
+// A ray to intersect along org + t dir, t in [tnear, tfar], with no hit yet.
+inline RTCRayHit rayHit(const glm::vec3& org, const glm::vec3& dir, float tnear, float tfar) {
+    RTCRayHit rh;
+    rh.ray.org_x = org.x; rh.ray.org_y = org.y; rh.ray.org_z = org.z; rh.ray.tnear = tnear;
+    rh.ray.dir_x = dir.x; rh.ray.dir_y = dir.y; rh.ray.dir_z = dir.z; rh.ray.time = 0.f;
+    rh.ray.tfar = tfar; rh.ray.mask = 0xFFFFFFFFu; rh.ray.id = 0; rh.ray.flags = 0;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    return rh;
+}
 
 // Spawn point for a ray leaving a surface on the side of `geomNormal`: the offset grows with
 // the magnitude of the coordinates (float rounding of positions and of Embree's intersection

@@ -233,27 +233,39 @@ ReferenceAO referenceAOPixelArea(const EmbreeScene& scene, const View& view, con
             OcclusionBatch batch(scene, settings.rayMode);
             auto visit = [&](uint32_t owner, bool visible) { open[owner] += visible ? 1u : 0u; };
             uint64_t primaryCount = 0;
+            // A pixel's primary rays leave the eye through one pixel: traced as coherent
+            // streams of up to kPrimaryBatch rays, they share their BVH traversal.
+            constexpr int kPrimaryBatch = 64;
+            RTCRayHit primaries[kPrimaryBatch];
             for (size_t i = r.begin(); i != r.end(); ++i) {
                 const int x = int(i % size_t(view.width)), y = int(i / size_t(view.width));
                 const uint64_t stream = streamSeed(settings.seed, i);
                 const ReplicatedPair jitters(stream, K, 0), directions(stream, K, 1);
-                for (int k = done; k < total; ++k) {
-                    const uint32_t owner = uint32_t(i * size_t(K) + size_t(k % K));
-                    glm::vec2 jitter = jitters.sample(uint32_t(k));
-                    CameraRay cr = cameraRay(view, float(x) + jitter.x, float(y) + jitter.y);
-                    uint32_t tri;
-                    float u, v, t;
-                    ++primaryCount;
-                    if (!scene.intersect(cr.origin, cr.direction, cr.tnear, inf, &tri, &u, &v, &t)) {
-                        open[owner] += 1;  // sky sample: A = 1
-                        continue;
+                for (int first = done; first < total; first += kPrimaryBatch) {
+                    const int count = std::min(kPrimaryBatch, total - first);
+                    for (int j = 0; j < count; ++j) {
+                        const glm::vec2 jitter = jitters.sample(uint32_t(first + j));
+                        const CameraRay cr = cameraRay(view, float(x) + jitter.x, float(y) + jitter.y);
+                        primaries[j] = rayHit(cr.origin, cr.direction, cr.tnear, inf);
                     }
-                    valid[i] = 1;
-                    SurfaceHit h = scene.surfaceAt(tri, u, v, cr.direction);
-                    glm::vec3 w = Frame::fromZ(h.shadingNormal)
-                                      .toWorld(sampleCosineHemisphere(directions.sample(uint32_t(k))));
-                    if (glm::dot(w, h.geomNormal) <= 0.f) continue;
-                    batch.add(offsetRayOrigin(h.position, h.geomNormal, h.errorScale), w, radius, owner, visit);
+                    scene.intersectCoherent(primaries, unsigned(count));
+                    primaryCount += uint64_t(count);
+                    for (int j = 0; j < count; ++j) {
+                        const int k = first + j;
+                        const uint32_t owner = uint32_t(i * size_t(K) + size_t(k % K));
+                        const RTCRayHit& p = primaries[j];
+                        if (p.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
+                            open[owner] += 1;  // sky sample: A = 1
+                            continue;
+                        }
+                        valid[i] = 1;
+                        const glm::vec3 incoming(p.ray.dir_x, p.ray.dir_y, p.ray.dir_z);
+                        SurfaceHit h = scene.surfaceAt(p.hit.primID, p.hit.u, p.hit.v, incoming);
+                        glm::vec3 w = Frame::fromZ(h.shadingNormal)
+                                          .toWorld(sampleCosineHemisphere(directions.sample(uint32_t(k))));
+                        if (glm::dot(w, h.geomNormal) <= 0.f) continue;
+                        batch.add(offsetRayOrigin(h.position, h.geomNormal, h.errorScale), w, radius, owner, visit);
+                    }
                 }
             }
             batch.flush(visit);

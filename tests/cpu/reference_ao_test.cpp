@@ -2,6 +2,8 @@
 // Every expected value below is derived analytically (form factors of a differential
 // area on the floor), never produced by the code under test.
 #include "reference/reference_ao.h"
+#include "reference/camera_rays.h"
+#include "reference/embree_scene.h"
 #include "reference/scene_shapes.h"
 #include "core/errors.h"
 #include "core/params.h"
@@ -10,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -307,6 +310,50 @@ TEST(ReferenceAO, PixelCentrePointsMatchClosedForm) {
     expectClose(centres, wallAO(d, R), "pixel centres, wall");
     ReferenceAO area = referenceAOPixelArea(es, view, quiet(R, 64));
     expectClose(area, wallAO(d, R), "pixel area, wall");
+}
+
+// The pixel-area reference traces each pixel's primary rays as one coherent stream: every ray
+// must get the hit a single rtcIntersect1 gives it (same triangle, distance and barycentrics),
+// including rays that miss.
+TEST(ReferenceAO, CoherentPrimaryStreamsHitWhatSingleRaysHit) {
+    Scene s = squareOccluderScene(0.5f, 0.4f);
+    EmbreeScene embree(s);
+    Camera cam;
+    cam.eye = {0.3f, 0.6f, 1.2f};
+    cam.target = {0.f, 0.3f, 0.f};  // the occluder, the floor and the sky above the horizon
+    const View view = makeView(cam, 24, 24);
+    size_t hits = 0, misses = 0;
+    for (int y = 0; y < view.height; y += 3)
+        for (int x = 0; x < view.width; x += 3) {
+            RTCRayHit stream[16];
+            for (int j = 0; j < 16; ++j) {
+                const CameraRay cr = cameraRay(view, float(x) + float(j % 4) / 4.f, float(y) + float(j / 4) / 4.f);
+                stream[j] = rayHit(cr.origin, cr.direction, cr.tnear, 1e30f);
+            }
+            RTCRayHit expected[16];
+            std::copy(stream, stream + 16, expected);
+            embree.intersectCoherent(stream, 16);
+            for (int j = 0; j < 16; ++j) {
+                const RTCRayHit& e = expected[j];
+                uint32_t tri = 0;
+                float u = 0.f, v = 0.f, t = 0.f;
+                const bool hit = embree.intersect(glm::vec3(e.ray.org_x, e.ray.org_y, e.ray.org_z),
+                                                  glm::vec3(e.ray.dir_x, e.ray.dir_y, e.ray.dir_z), e.ray.tnear,
+                                                  e.ray.tfar, &tri, &u, &v, &t);
+                ASSERT_EQ(hit, stream[j].hit.geomID != RTC_INVALID_GEOMETRY_ID) << x << "," << y << " ray " << j;
+                if (!hit) {
+                    ++misses;
+                    continue;
+                }
+                ++hits;
+                EXPECT_EQ(stream[j].hit.primID, tri);
+                EXPECT_NEAR(stream[j].ray.tfar, t, 1e-5f * t);
+                EXPECT_NEAR(stream[j].hit.u, u, 1e-4f);
+                EXPECT_NEAR(stream[j].hit.v, v, 1e-4f);
+            }
+        }
+    EXPECT_GT(hits, 100u);
+    EXPECT_GT(misses, 0u) << "the rays above the horizon should miss";
 }
 
 }  // namespace
