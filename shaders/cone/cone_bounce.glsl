@@ -4,7 +4,9 @@
 // its outgoing radiance becomes L_direct + albedo * sum_c w_c (L_c + (1 - alpha_c) sky).
 // The weights integrate the cosine lobe and sum to 1, so with albedo < 1 each bounce adds
 // less than the previous one. Voxels whose normals cancel (both faces of a thin wall) keep
-// their direct light: they have no hemisphere to gather over.
+// their direct light: they have no hemisphere to gather over. A two-sided voxel's facing normal
+// (voxelize_shared.h) is shorter than one but never zero: it gathers on its brighter face, and
+// its dimmer face shows the sum at the share it shows the direct light.
 //
 // Defines: CONE_GI = 1, CONE_ANISO (as the pixel cones), RADIANCE_FORMAT, RADIANCE_FORMAT_MAX;
 // BOUNCE_LIST for the first of the two passes below.
@@ -18,10 +20,11 @@ layout(std430, binding = CONE_BINDING_VOXEL_LIST) buffer VoxelList {
 layout(binding = CONE_UNIT_BOUNCE_DIRECT) uniform sampler3D bounce_direct;  // emission + direct, premultiplied
 layout(binding = CONE_UNIT_BOUNCE_ALBEDO) uniform sampler3D bounce_albedo;
 
-// A voxel gathers when it holds radiance and a normal.
+// A voxel gathers when it holds radiance and a normal (level 0 holds unit normals, zero where
+// faces cancel, and two-sided voxels' facing normals).
 bool bounce_gathers(ivec3 v) {
     vec3 n = texelFetch(cone_normalTexture, v, 0).xyz;
-    return texelFetch(bounce_direct, v, 0).a > 0.0 && dot(n, n) >= 0.25;
+    return texelFetch(bounce_direct, v, 0).a > 0.0 && dot(n, n) > 0.0;
 }
 
 #ifdef BOUNCE_LIST

@@ -3,6 +3,8 @@
 // visibility from a voxel walk (Amanatides-Woo) through the level-0 opacity. Radiance is a
 // per-area quantity, so nothing here scales with the voxel size: the result does not
 // change with the grid resolution. Output premultiplied: (L * opacity, opacity).
+// TWO_SIDED: two-sided voxels (voxelize_shared.h) are lit on each face and write their facing
+// normal, level 0 of the normal texture, which the mips then filter.
 #include "common/scene.glsl"
 #include "voxelize/voxelize_shared.h"
 
@@ -13,6 +15,10 @@ layout(binding = 1) uniform sampler3D uAlbedo;
 layout(binding = 2) uniform sampler3D uNormal;
 layout(binding = 3) uniform sampler3D uEmission;
 layout(RADIANCE_FORMAT, binding = 0) uniform writeonly image3D outRadiance;
+#ifdef TWO_SIDED
+layout(binding = 4) uniform sampler3D uTwoSided;  // xyz = winding normal, w = doubleSided share
+layout(rgba16f, binding = 1) uniform writeonly image3D outNormal;
+#endif
 
 uniform ivec3 uResolution;
 uniform vec3 uGridOrigin;
@@ -143,10 +149,28 @@ void main() {
         return;
     }
     vec3 albedo = texelFetch(uAlbedo, v, 0).rgb;
-    vec3 n = texelFetch(uNormal, v, 0).xyz;
     vec3 L = texelFetch(uEmission, v, 0).rgb;
     vec3 pVoxel = vec3(v) + 0.5;
     vec3 pWorld = uGridOrigin + pVoxel * uVoxelSize;
+#ifdef TWO_SIDED
+    // Read from the texture resolve wrote, never from the normal this pass rewrites, so every
+    // injection gives the same result whatever the lights were before.
+    vec4 twoSided = texelFetch(uTwoSided, v, 0);
+    if (twoSided.w >= VOX_TWO_SIDED_SHARE && dot(twoSided.xyz, twoSided.xyz) > 0.25) {
+        vec3 front = normalize(twoSided.xyz);
+        vec3 Ef = vec3(0.0), Eb = vec3(0.0);
+        for (int i = 0; i < uLightCount; ++i) {
+            Ef += inject_lightIrradiance(i, pWorld, pVoxel, front);
+            Eb += inject_lightIrradiance(i, pWorld, pVoxel, -front);
+        }
+        vec3 Lf = min(L + albedo / PI * Ef, vec3(RADIANCE_MAX)), Lb = min(L + albedo / PI * Eb, vec3(RADIANCE_MAX));
+        float k = vox_twoSidedNormalScale(max(Lf.r, max(Lf.g, Lf.b)), max(Lb.r, max(Lb.g, Lb.b)));
+        imageStore(outNormal, v, vec4(front * k, 1.0));
+        imageStore(outRadiance, v, vec4((k >= 0.0 ? Lf : Lb) * alpha, alpha));
+        return;
+    }
+#endif
+    vec3 n = texelFetch(uNormal, v, 0).xyz;
     vec3 E = vec3(0.0);
     for (int i = 0; i < uLightCount; ++i) E += inject_lightIrradiance(i, pWorld, pVoxel, n);
     L += albedo / PI * E;

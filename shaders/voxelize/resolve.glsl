@@ -1,12 +1,13 @@
 // Turns the fixed-point sums of voxelize.glsl into the float textures of the VoxelGrid
 // contract: opacity (1 where any triangle overlaps), weighted-average albedo, unit normal
-// and emission. Counts occupied voxels.
+// and emission, and (TWO_SIDED) the unit normal with the doubleSided share of the weight
+// (voxelize_shared.h: two-sided voxels). Counts occupied voxels.
 #include "voxelize/voxelize_shared.h"
 
 layout(local_size_x = VOX_GRID_GROUP, local_size_y = VOX_GRID_GROUP, local_size_z = VOX_GRID_GROUP) in;
 
-// The accumulators are read through texture units (texelFetch; 13 of the 16 guaranteed per
-// stage), so the only images are the four outputs: GL guarantees 8 image units.
+// The accumulators are read through texture units (texelFetch; up to 14 of the 16 guaranteed
+// per stage), so the only images are the four or five outputs: GL guarantees 8 image units.
 layout(binding = VOX_ACC_ALBEDO + 0) uniform usampler3D accAlbedoR;
 layout(binding = VOX_ACC_ALBEDO + 1) uniform usampler3D accAlbedoG;
 layout(binding = VOX_ACC_ALBEDO + 2) uniform usampler3D accAlbedoB;
@@ -14,6 +15,9 @@ layout(binding = VOX_ACC_NORMAL + 0) uniform usampler3D accNormalX;
 layout(binding = VOX_ACC_NORMAL + 1) uniform usampler3D accNormalY;
 layout(binding = VOX_ACC_NORMAL + 2) uniform usampler3D accNormalZ;
 layout(binding = VOX_ACC_WEIGHT) uniform usampler3D accWeight;
+#ifdef TWO_SIDED
+layout(binding = VOX_ACC_TWO_SIDED) uniform usampler3D accTwoSided;
+#endif
 #ifdef HAS_EMISSION
 layout(binding = VOX_ACC_EMISSION + 0) uniform usampler3D accEmissionRLo;
 layout(binding = VOX_ACC_EMISSION + 1) uniform usampler3D accEmissionRHi;
@@ -27,6 +31,11 @@ layout(r16f, binding = VOX_IMAGE_RESOLVE_OPACITY) uniform writeonly image3D outO
 layout(rgba16f, binding = VOX_IMAGE_RESOLVE_ALBEDO) uniform writeonly image3D outAlbedo;
 layout(rgba16f, binding = VOX_IMAGE_RESOLVE_NORMAL) uniform writeonly image3D outNormal;
 layout(EMISSION_FORMAT, binding = VOX_IMAGE_RESOLVE_EMISSION) uniform writeonly image3D outEmission;
+#ifdef TWO_SIDED
+// xyz = the unit normal (the winding side, kept for every later injection), w = the share of
+// the weight whose material is doubleSided.
+layout(rgba16_snorm, binding = VOX_IMAGE_RESOLVE_TWO_SIDED) uniform writeonly image3D outTwoSided;
+#endif
 
 layout(std430, binding = VOX_BINDING_BIGLIST) buffer BigList {
     uvec4 bigHeader;  // w = occupied voxels
@@ -55,6 +64,9 @@ void main() {
         imageStore(outAlbedo, v, vec4(0.0));
         imageStore(outNormal, v, vec4(0.0));
         imageStore(outEmission, v, vec4(0.0));
+#ifdef TWO_SIDED
+        imageStore(outTwoSided, v, vec4(0.0));
+#endif
         return;
     }
     atomicAdd(bigHeader.w, 1u);
@@ -77,4 +89,7 @@ void main() {
     imageStore(outAlbedo, v, vec4(albedo, 1.0));
     imageStore(outNormal, v, vec4(n, 1.0));
     imageStore(outEmission, v, vec4(e, 1.0));
+#ifdef TWO_SIDED
+    imageStore(outTwoSided, v, vec4(n, float(texelFetch(accTwoSided, v, 0).r) / weight));
+#endif
 }

@@ -14,10 +14,10 @@
 // triangles with many columns to a list; the big pass runs one work group per listed
 // triangle, its invocations striding over the columns.
 //
-// Accumulators: OpenGL guarantees only 8 image uniforms per stage, so the 13 fixed-point
+// Accumulators: OpenGL guarantees only 8 image uniforms per stage, so the 14 fixed-point
 // sums are written by two passes over the triangles, two programs whose sources declare only
 // the images they bind and then include this body: the geometry pass (voxelize.glsl: albedo,
-// normal, weight, 7 images) and, for scenes with emission, the emission pass
+// normal, weight and, for scenes with doubleSided materials, their weight: 7 or 8 images) and, for scenes with emission, the emission pass
 // (voxelize_emission.glsl, EMISSION_PASS: three 64-bit sums, 6 images), which skips every
 // triangle whose material emits nothing (its contribution is exactly zero) and reads the
 // weights of the geometry pass at resolve. Integer sums are order-independent, so the split
@@ -171,6 +171,9 @@ void vox_accumulate(Tri tri, ivec3 v) {
     imageAtomicAdd(accNormalY, v, uint(q.y));
     imageAtomicAdd(accNormalZ, v, uint(q.z));
     imageAtomicAdd(accWeight, v, w);
+#ifdef TWO_SIDED
+    if ((m.flags & MATERIAL_DOUBLE_SIDED) != 0) imageAtomicAdd(accTwoSided, v, w);
+#endif
 #endif
 }
 

@@ -21,21 +21,25 @@ VCT_CONST int VOX_BIG_GROUP = 64;
 VCT_CONST int VOX_SMALL_COLUMNS = 48;
 VCT_CONST int VOX_GRID_GROUP = 4;   // 4x4x4 for per-voxel passes (resolve, inject, mips)
 
-// The 13 fixed-point accumulators (r32ui 3D textures), by index: albedo r, g, b; normal x,
-// y, z (two's complement sums); the sum of weights; emission r lo, r hi, g lo, g hi, b lo,
-// b hi. GL guarantees 8 image units, so no pass binds them all as images: the geometry pass
-// of voxelize.glsl binds accumulator k at image unit k (k < VOX_ACC_EMISSION), its emission
-// pass binds k at image unit k - VOX_ACC_EMISSION, and resolve.glsl reads every k through
-// texture unit k (texelFetch), writing its outputs to the image units below.
+// The 14 fixed-point accumulators (r32ui 3D textures), by index: albedo r, g, b; normal x,
+// y, z (two's complement sums); the sum of weights; the sum of weights of doubleSided
+// materials (allocated only when the scene has one: TWO_SIDED); emission r lo, r hi, g lo,
+// g hi, b lo, b hi. GL guarantees 8 image units, so no pass binds them all as images: the
+// geometry pass of voxelize.glsl binds accumulator k at image unit k (k < VOX_ACC_EMISSION),
+// its emission pass binds k at image unit k - VOX_ACC_EMISSION, and resolve.glsl reads every
+// k through texture unit k (texelFetch; 14 of the 16 guaranteed), writing its outputs to the
+// image units below.
 VCT_CONST int VOX_ACC_ALBEDO = 0;
 VCT_CONST int VOX_ACC_NORMAL = 3;
 VCT_CONST int VOX_ACC_WEIGHT = 6;
-VCT_CONST int VOX_ACC_EMISSION = 7;
-VCT_CONST int VOX_ACC_COUNT = 13;
+VCT_CONST int VOX_ACC_TWO_SIDED = 7;
+VCT_CONST int VOX_ACC_EMISSION = 8;
+VCT_CONST int VOX_ACC_COUNT = 14;
 VCT_CONST int VOX_IMAGE_RESOLVE_OPACITY = 0;
 VCT_CONST int VOX_IMAGE_RESOLVE_ALBEDO = 1;
 VCT_CONST int VOX_IMAGE_RESOLVE_NORMAL = 2;
 VCT_CONST int VOX_IMAGE_RESOLVE_EMISSION = 3;
+VCT_CONST int VOX_IMAGE_RESOLVE_TWO_SIDED = 4;
 
 // Storage binding of the big-triangle list: uvec4 header {listed triangles, -, -, occupied
 // voxel count}, then triangle ids.
@@ -63,5 +67,31 @@ VCT_CONST float VOX_EMISSION_MAX = 1.0e9;
 // through its back: a bright rim on a ceiling 2 cm above a light panel once voxels are
 // finer than the gap, and a floor lit by the back of a panel facing away from it.
 VOX_FN float vox_facingWeight(vec3 n, vec3 d) { return clamp(1.0f - 2.0f * dot(n, d), 0.0f, 1.0f); }
+
+// Two-sided voxels. A glTF doubleSided material reflects and emits from both faces. A voxel
+// at least VOX_TWO_SIDED_SHARE of whose accumulation weight is doubleSided is lit on both
+// faces by injection, each face with its own cosine and shadow ray, which gives the radiance
+// leaving its front (the side of its winding normal n) and its back. One radiance texel and
+// the facing test carry both: the texel holds the brighter face's radiance, and the voxel's
+// facing normal (the normal texture the cones' facing test and the bounces read) is
+// vox_twoSidedNormalScale(front, back) * n. Its magnitude k makes a cone that meets the dimmer
+// face head on see the brighter radiance times 1 - 2 k, which is the dimmer face's own where
+// r = dim / bright >= 1/15 (k = (1 - r) / 2), and rises to the unit normal of a one-sided
+// surface facing the lit side as r -> 0 (k = 1 - 8 r: a face lit at under 1/15 of the other
+// shows 0). Lit on one face only, a two-sided voxel is exactly a one-sided surface facing the
+// light; lit on neither, it keeps its winding normal, as a one-sided surface. Its sign picks
+// the brighter face (ties: the front), and k never falls below VOX_TWO_SIDED_MIN_SCALE, so the
+// facing normal always points somewhere: the bounces gather around it, on the brighter face
+// (a face as bright as the other shows 1 - 1/128 of it). `front` and `back` are the faces'
+// max components.
+VCT_CONST float VOX_TWO_SIDED_SHARE = 0.5f;
+VCT_CONST float VOX_TWO_SIDED_MIN_SCALE = 1.0f / 256.0f;
+VOX_FN float vox_twoSidedNormalScale(float front, float back) {
+    float bright = max(front, back);
+    if (!(bright > 0.0f)) return 1.0f;
+    float r = min(front, back) / bright;
+    float k = max(max(0.5f * (1.0f - r), 1.0f - 8.0f * r), VOX_TWO_SIDED_MIN_SCALE);
+    return front >= back ? k : -k;
+}
 
 VCT_END_NAMESPACE

@@ -137,7 +137,7 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
         ctx.runCounts["mips"]++;
         if (r.reuseSceneData) keepBounded(cache.clipmaps, cache.order, key, v.clipmap);
     } else if (levels == 0 && !v.grid) {
-        v.grid = std::make_shared<VoxelGrid>(voxelizeScene(ctx.gpu, region.bounds, r.voxelRes, r.params, ctx.timer));
+        v.grid = std::make_shared<VoxelGrid>(voxelizeScene(ctx.gpu, region.bounds, r.voxelRes, r.params, ctx.timer, inject));
         gl.checkErrors("voxelize");
         ctx.runCounts["voxelize"]++;
         lightAndFilter(ctx, *v.grid, cone, inject, aniso);

@@ -310,7 +310,7 @@ void traceSparseBounces(SparseVoxelScene& voxels, float sky, const ConeSettings&
         openvdb::tree::LeafManager<openvdb::Vec3STree> leaves(next->tree());
         tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.leafCount()), [&](const tbb::blocked_range<size_t>& r) {
             LevelSampler sampler(voxels, mp, true);
-            ConstAcc3 normalAcc(voxels.normal->tree()), albedoAcc(voxels.albedo->tree());
+            ConstAcc3 normalAcc(voxels.facing()->tree()), albedoAcc(voxels.albedo->tree());
             OpacityAcc opacityAcc(opacity);
             for (size_t li = r.begin(); li != r.end(); ++li)
                 for (auto it = leaves.leaf(li).beginValueOn(); it; ++it) {
@@ -319,7 +319,7 @@ void traceSparseBounces(SparseVoxelScene& voxels, float sky, const ConeSettings&
                     const openvdb::Vec3s nv = normalAcc.getValue(ijk);
                     const glm::vec3 n(nv[0], nv[1], nv[2]);
                     // bounce_gathers: radiance and a normal (faces that cancel keep their direct light).
-                    if (!(a > 0.f) || glm::dot(n, n) < 0.25f) continue;
+                    if (!(a > 0.f) || !(glm::dot(n, n) > 0.f)) continue;
                     const glm::vec3 nn = glm::normalize(n);
                     const glm::vec3 centre = glm::vec3(ijk.x(), ijk.y(), ijk.z()) + 0.5f;
                     const Gather g =

@@ -4,8 +4,11 @@
 // Radiance is per area, so nothing scales with the voxel size. The walk is hierarchical: a
 // DDA over 8^3 leaf blocks (OpenVDB's math::DDA) skips empty blocks, and a voxel DDA runs only
 // inside blocks that hold a leaf; it crosses the same voxels as the GPU's Amanatides-Woo walk.
+// Two-sided voxels (voxelize_shared.h) are lit on each face and get a facing normal
+// (SparseVoxelScene::facingNormal), as inject.glsl rewrites the GPU's normal texture.
 #include "core/errors.h"
 #include "vdb/sparse_detail.h"
+#include "voxelize/voxelize_shared.h"
 
 #include <openvdb/math/DDA.h>
 #include <openvdb/math/Ray.h>
@@ -119,10 +122,18 @@ void injectSparseRadiance(SparseVoxelScene& voxels, const Scene& scene, float sh
                                                          openvdb::TopologyCopy());
     openvdb::tree::LeafManager<const openvdb::FloatTree> opacityLeaves(opacity);
     openvdb::tree::LeafManager<openvdb::Vec3STree> radianceLeaves(*radiance);
+    // Written only at two-sided voxels; every other voxel keeps its normal.
+    openvdb::Vec3SGrid::Ptr facing = voxels.twoSided ? voxels.normal->deepCopy() : nullptr;
     tbb::parallel_for(tbb::blocked_range<size_t>(0, opacityLeaves.leafCount()), [&](const tbb::blocked_range<size_t>& r) {
         ConstAcc<openvdb::FloatTree> opAcc(opacity);
         ConstAcc<openvdb::Vec3STree> alAcc(voxels.albedo->tree()), nrAcc(voxels.normal->tree()),
             emAcc(voxels.emission->tree());
+        std::unique_ptr<ConstAcc<openvdb::FloatTree>> twoSidedAcc;
+        std::unique_ptr<openvdb::Vec3SGrid::Accessor> facingAcc;
+        if (facing) {
+            twoSidedAcc = std::make_unique<ConstAcc<openvdb::FloatTree>>(voxels.twoSided->tree());
+            facingAcc = std::make_unique<openvdb::Vec3SGrid::Accessor>(facing->getAccessor());
+        }
         for (size_t li = r.begin(); li != r.end(); ++li) {
             const auto& opLeaf = opacityLeaves.leaf(li);
             auto& outLeaf = radianceLeaves.leaf(li);
@@ -134,9 +145,27 @@ void injectSparseRadiance(SparseVoxelScene& voxels, const Scene& scene, float sh
                 const glm::vec3 albedo(a[0], a[1], a[2]), n(nv[0], nv[1], nv[2]);
                 const glm::vec3 pVoxel = glm::vec3(ijk.x(), ijk.y(), ijk.z()) + 0.5f;
                 const glm::vec3 pWorld = voxels.origin + pVoxel * voxels.voxelSize;
+                const glm::vec3 emitted(e[0], e[1], e[2]);
+                if (twoSidedAcc && twoSidedAcc->getValue(ijk) >= gpu::VOX_TWO_SIDED_SHARE && glm::dot(n, n) > 0.25f) {
+                    // inject.glsl's two-sided branch: each face lit with its own cosine and shadow ray.
+                    const glm::vec3 front = glm::normalize(n);
+                    glm::vec3 Ef(0.f), Eb(0.f);
+                    for (const Light& light : scene.lights) {
+                        Ef += lightIrradiance(ctx, light, pWorld, pVoxel, front, opAcc);
+                        Eb += lightIrradiance(ctx, light, pWorld, pVoxel, -front, opAcc);
+                    }
+                    const glm::vec3 Lf = glm::min(emitted + albedo / kPi * Ef, glm::vec3(kFloatMax));
+                    const glm::vec3 Lb = glm::min(emitted + albedo / kPi * Eb, glm::vec3(kFloatMax));
+                    const float k = gpu::vox_twoSidedNormalScale(std::max(Lf.x, std::max(Lf.y, Lf.z)),
+                                                                 std::max(Lb.x, std::max(Lb.y, Lb.z)));
+                    const glm::vec3 f = front * k, L = (k >= 0.f ? Lf : Lb) * alpha;
+                    facingAcc->setValueOnly(ijk, openvdb::Vec3s(f.x, f.y, f.z));
+                    outLeaf.setValueOnly(it.pos(), openvdb::Vec3s(L.x, L.y, L.z));
+                    continue;
+                }
                 glm::vec3 E(0.f);
                 for (const Light& light : scene.lights) E += lightIrradiance(ctx, light, pWorld, pVoxel, n, opAcc);
-                glm::vec3 L = glm::vec3(e[0], e[1], e[2]) + albedo / kPi * E;
+                glm::vec3 L = emitted + albedo / kPi * E;
                 L = glm::min(L, glm::vec3(kFloatMax)) * alpha;
                 outLeaf.setValueOnly(it.pos(), openvdb::Vec3s(L.x, L.y, L.z));
             }
@@ -146,6 +175,8 @@ void injectSparseRadiance(SparseVoxelScene& voxels, const Scene& scene, float sh
     voxels.radiance->setName("radiance");
     voxels.radiance->setTransform(levelTransform(voxels, 0));
     voxels.radianceLevels = {voxels.radiance};
+    if (facing) facing->setName("facing_normal");
+    voxels.facingNormal = facing;
     voxels.stats.injectSeconds = secondsSince(t0);
     updateSparseMemoryStats(voxels);
 }

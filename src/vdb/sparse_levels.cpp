@@ -220,7 +220,7 @@ void buildSparseLevels(SparseVoxelScene& voxels, bool anisotropic) {
     voxels.opacityLevels.resize(1);
     if (voxels.injected()) voxels.radianceLevels.resize(1);
     voxels.normalLevels.clear();
-    if (voxels.injected()) voxels.normalLevels = {voxels.normal};
+    if (voxels.injected()) voxels.normalLevels = {voxels.facing()};
     for (auto& levels : voxels.directional) levels.clear();
     for (int level = 1; level < voxels.levels; ++level) {
         buildLevel(voxels, level);
@@ -243,16 +243,20 @@ void updateSparseMemoryStats(SparseVoxelScene& voxels) {
             s.memoryBytes += size_t(l.opacity->memUsage());
             if (l.radiance) s.memoryBytes += size_t(l.radiance->memUsage());
         }
-    for (const auto* g : {&voxels.albedo, &voxels.normal, &voxels.emission})
+    for (const auto* g : {&voxels.albedo, &voxels.normal, &voxels.emission, &voxels.facingNormal})
         if (*g) s.memoryBytes += size_t((*g)->memUsage());
+    if (voxels.twoSided) s.memoryBytes += size_t(voxels.twoSided->memUsage());
     // Dense equivalent of the same channels in float32: per level, opacity (4 B) and radiance
-    // (12 B) when held; level 0 also albedo, normal and emission (12 B each).
+    // (12 B) when held; level 0 also albedo, normal and emission (12 B each), and with two-sided
+    // voxels their share (4 B) and, once injected, the facing normals (12 B).
     const int maxRes = std::max(voxels.resolution.x, std::max(voxels.resolution.y, voxels.resolution.z));
     s.denseBytes = s.denseCubeBytes = 0;
     for (int level = 0; level < int(voxels.opacityLevels.size()); ++level) {
         size_t perVoxel = 4 + (level < int(voxels.radianceLevels.size()) ? 12 : 0) +
                           (level > 0 && level < int(voxels.normalLevels.size()) ? 12 : 0);
-        if (level == 0) perVoxel += (voxels.albedo ? 12 : 0) + (voxels.normal ? 12 : 0) + (voxels.emission ? 12 : 0);
+        if (level == 0)
+            perVoxel += (voxels.albedo ? 12 : 0) + (voxels.normal ? 12 : 0) + (voxels.emission ? 12 : 0) +
+                        (voxels.twoSided ? 4 : 0) + (voxels.facingNormal ? 12 : 0);
         s.denseBytes += product(voxels.levelSize(level)) * perVoxel;
         s.denseCubeBytes += product(glm::ivec3(std::max(maxRes >> level, 1))) * perVoxel;
     }
@@ -279,6 +283,8 @@ SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject
         traceSparseBounces(voxels, bounce.sky ? sky : 0.f, readConeSettings(params), bounce.bounces,
                            options.anisotropic);
         voxels.stats.bounceSeconds = secondsSince(t0);
+    } else {
+        voxels.twoSided.reset();  // only injection reads it
     }
     buildSparseLevels(voxels, options.anisotropic);
     // Collapse constant blocks into tiles (tolerance 0: values are kept exactly).
@@ -290,6 +296,7 @@ SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject
             if (l.radiance) openvdb::tools::prune(l.radiance->tree());
         }
     for (auto* g : {&voxels.albedo, &voxels.normal, &voxels.emission}) openvdb::tools::prune((*g)->tree());
+    if (voxels.twoSided) openvdb::tools::prune(voxels.twoSided->tree());
     updateSparseMemoryStats(voxels);
     return voxels;
 }

@@ -47,6 +47,7 @@ struct VoxelSums {
     uint64_t albedo[3] = {0, 0, 0};
     int64_t normal[3] = {0, 0, 0};
     uint64_t weight = 0;
+    uint64_t twoSidedWeight = 0;  // of doubleSided materials
     uint64_t emission[3] = {0, 0, 0};
 };
 
@@ -115,6 +116,7 @@ void accumulate(const Scene& scene, const Tri& tri, const glm::ivec3& v, ThreadS
     const glm::vec3 emission = tri.material < scene.materials.size()
                                    ? materialEmission(scene, tri.material, uv)
                                    : glm::vec3(0.f);
+    const bool doubleSided = tri.material < scene.materials.size() && scene.materials[tri.material].doubleSided;
     glm::vec3 n = b.x * tri.n[0] + b.y * tri.n[1] + b.z * tri.n[2];
     const float len = glm::length(n), faceLen = glm::length(tri.faceN);
     n = len > 1e-6f ? n / len : (faceLen > 0.f ? tri.faceN / faceLen : glm::vec3(0.f));
@@ -135,6 +137,7 @@ void accumulate(const Scene& scene, const Tri& tri, const glm::ivec3& v, ThreadS
         if (e > 0.f) s.emission[c] += uint64_t(e * float(w) * kEmissionScale);
     }
     s.weight += w;
+    if (doubleSided) s.twoSidedWeight += w;
 }
 
 // vox_column: the candidate run of one column of the dominant-axis projection.
@@ -236,6 +239,12 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
     auto albedo = std::make_shared<openvdb::Vec3STree>(topology, zero, zero, openvdb::TopologyCopy());
     auto normal = std::make_shared<openvdb::Vec3STree>(topology, zero, zero, openvdb::TopologyCopy());
     auto emission = std::make_shared<openvdb::Vec3STree>(topology, zero, zero, openvdb::TopologyCopy());
+    // The doubleSided share of each voxel's weight (resolve.glsl's two-sided texture), only when
+    // a material is doubleSided.
+    const bool twoSided = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                      [](const Material& m) { return m.doubleSided; });
+    auto twoSidedShare = std::make_shared<openvdb::FloatTree>(topology, 0.f, 0.f, openvdb::TopologyCopy());
+    openvdb::tree::LeafManager<openvdb::FloatTree> twoSidedLeaves(*twoSidedShare);
     openvdb::tree::LeafManager<openvdb::FloatTree> opacityLeaves(*opacity);
     openvdb::tree::LeafManager<openvdb::Vec3STree> albedoLeaves(*albedo), normalLeaves(*normal),
         emissionLeaves(*emission);
@@ -265,6 +274,7 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
                         s.emission[c] += t.emission[c];
                     }
                     s.weight += t.weight;
+                    s.twoSidedWeight += t.twoSidedWeight;
                 }
                 const float weight = float(s.weight);
                 openvdb::Vec3s a, n, e;
@@ -280,6 +290,7 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
                 alLeaf.setValueOnly(offset, a);
                 nrLeaf.setValueOnly(offset, n);
                 emLeaf.setValueOnly(offset, e);
+                if (twoSided) twoSidedLeaves.leaf(li).setValueOnly(offset, float(s.twoSidedWeight) / weight);
             }
         }
     });
@@ -297,6 +308,7 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
     out.normal = makeGrid(normal, "normal");
     out.normal->setVectorType(openvdb::VEC_COVARIANT_NORMALIZE);
     out.emission = makeGrid(emission, "emission");
+    if (twoSided) out.twoSided = makeGrid(twoSidedShare, "two_sided");
     out.opacityLevels = {out.opacity};
     out.stats.voxelizeSeconds = secondsSince(t0);
     updateSparseMemoryStats(out);

@@ -59,6 +59,12 @@ struct SparseVoxelScene {
     openvdb::Vec3SGrid::Ptr albedo;     // level 0, average linear albedo
     openvdb::Vec3SGrid::Ptr normal;     // level 0, average unit normal (0 where faces cancel)
     openvdb::Vec3SGrid::Ptr emission;   // level 0, average emitted radiance
+    // Level 0, present when a material is doubleSided: the share of each voxel's weight whose
+    // material is doubleSided (two-sided voxels: shaders/voxelize/voxelize_shared.h).
+    openvdb::FloatGrid::Ptr twoSided;
+    // Level 0, set by injection when the scene has two-sided voxels: `normal`, with each
+    // two-sided voxel's facing normal in place of its own (the GPU rewrites its normal texture).
+    openvdb::Vec3SGrid::Ptr facingNormal;
     openvdb::Vec3SGrid::Ptr radiance;   // level 0, premultiplied; null unless injected
     std::vector<openvdb::FloatGrid::Ptr> opacityLevels;    // [0, levels)
     std::vector<openvdb::Vec3SGrid::Ptr> radianceLevels;   // [0, levels) when injected, else empty
@@ -78,6 +84,8 @@ struct SparseVoxelScene {
     SparseVoxelStats stats;
 
     bool injected() const { return bool(radiance); }
+    // The normals the facing test and the bounces read at level 0.
+    const openvdb::Vec3SGrid::Ptr& facing() const { return facingNormal ? facingNormal : normal; }
     bool anisotropic() const { return !directional[0].empty(); }
     // Voxels per axis of level k (GL mip sizes).
     glm::ivec3 levelSize(int level) const { return glm::max(resolution >> level, glm::ivec3(1)); }

@@ -60,7 +60,8 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
         if (!o || !o->opacity || o->resolution != glm::ivec3(o->resolution.x) ||
             o->resolution.x != outerLevels.front()->resolution.x)
             throw InternalError("injectRadiance", "outer levels must be voxelized cubic grids of one size");
-    const GLuint p = cachedProgram(injectProgramKey(format, int(outerLevels.size())));
+    const bool twoSided = bool(grid.twoSided);
+    const GLuint p = cachedProgram(injectProgramKey(format, int(outerLevels.size()), twoSided));
     const glm::ivec3 res = grid.resolution;
     grid.radiance = createTexture3D(format, res.x, res.y, res.z, grid.levels);
 
@@ -73,6 +74,12 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
     glBindTextureUnit(2, grid.normal.id());
     glBindTextureUnit(3, grid.emission.id());
     bindImage3D(0, grid.radiance.id(), 0, GL_WRITE_ONLY, format);
+    if (twoSided) {
+        // Two-sided voxels write their facing normal into level 0 of the normal texture; every
+        // other voxel reads its own through unit 2, so no texel is both read and written.
+        glBindTextureUnit(4, grid.twoSided.id());
+        bindImage3D(1, grid.normal.id(), 0, GL_WRITE_ONLY, GL_RGBA16F);
+    }
     setUniform(p, "uResolution", res);
     setUniform(p, "uGridOrigin", grid.origin);
     setUniform(p, "uVoxelSize", grid.voxelSize);
@@ -93,9 +100,9 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
     glUseProgram(p);
     dispatchGrid(res);
 
-    for (GLuint u = 0; u < 4; ++u) glBindTextureUnit(u, 0);
+    for (GLuint u = 0; u < 5; ++u) glBindTextureUnit(u, 0);
     for (size_t k = 0; k < outerLevels.size(); ++k) glBindTextureUnit(GLuint(outerUnit + k), 0);
-    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    for (GLuint u = 0; u < 2; ++u) glBindImageTexture(u, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
     glUseProgram(0);
     grid.memoryBytes = voxelGridMemoryBytes(grid);
 }

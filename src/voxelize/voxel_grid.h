@@ -37,8 +37,14 @@ struct VoxelGrid {
 
     GlTexture opacity;   // GL_R16F, 3D, mipmapped: covered fraction of the voxel in [0, 1]
     GlTexture albedo;    // GL_RGBA16F, level 0 only: average linear albedo (rgb), a = 1 where occupied
-    GlTexture normal;    // GL_RGBA16F, level 0 only: average unit normal (xyz), a = 1 where occupied
+    // GL_RGBA16F, mipmapped like opacity (the mips once radiance is injected): level 0 the
+    // average unit normal (xyz), a = 1 where occupied; injection turns a two-sided voxel's into
+    // its facing normal (voxelize_shared.h). The cones' facing test reads every level.
+    GlTexture normal;
     GlTexture emission;  // GL_RGBA16F, level 0 only: average emitted radiance (rgb)
+    // GL_RGBA16_SNORM, level 0 only, present when a material is doubleSided: the unit normal
+    // (xyz, the winding side) and the doubleSided share of the voxel's weight (a).
+    GlTexture twoSided;
     GlTexture radiance;  // GL_RGBA16F, 3D, mipmapped, premultiplied; empty until injection
     bool anisotropic = false;
     std::array<GlTexture, 6> anisoRadiance;  // see above; empty unless anisotropic

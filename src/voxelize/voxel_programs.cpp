@@ -4,25 +4,28 @@
 
 namespace vct {
 
-ProgramKey voxelizeProgramKey(bool emissionPass, bool bigPass) {
+ProgramKey voxelizeProgramKey(bool emissionPass, bool bigPass, bool twoSided) {
     ShaderDefines d;
     if (bigPass) d.push_back({"BIG_PASS", "1"});
+    if (twoSided && !emissionPass) d.push_back({"TWO_SIDED", "1"});
     // One source per pass, each declaring only the images it binds.
     return computeProgramKey(emissionPass ? "voxelize/voxelize_emission.glsl" : "voxelize/voxelize.glsl", d);
 }
 
-ProgramKey resolveProgramKey(bool hasEmission, GLenum emissionFormat) {
+ProgramKey resolveProgramKey(bool hasEmission, GLenum emissionFormat, bool twoSided) {
     ShaderDefines d;
     if (hasEmission) d.push_back({"HAS_EMISSION", "1"});
+    if (twoSided) d.push_back({"TWO_SIDED", "1"});
     d.push_back({"EMISSION_FORMAT", glslImageFormat(emissionFormat)});
     d.push_back({"EMISSION_FORMAT_MAX", formatMaxLiteral(emissionFormat)});
     return computeProgramKey("voxelize/resolve.glsl", d);
 }
 
-ProgramKey injectProgramKey(GLenum radianceFormat, int outerLevels) {
+ProgramKey injectProgramKey(GLenum radianceFormat, int outerLevels, bool twoSided) {
     ShaderDefines d = {{"RADIANCE_FORMAT", glslImageFormat(radianceFormat)},
                        {"RADIANCE_FORMAT_MAX", formatMaxLiteral(radianceFormat)}};
     if (outerLevels > 0) d.push_back({"OUTER_LEVELS", std::to_string(outerLevels)});
+    if (twoSided) d.push_back({"TWO_SIDED", "1"});
     return computeProgramKey("voxelize/inject.glsl", d);
 }
 
@@ -46,12 +49,16 @@ ProgramKey clipmapNestProgramKey(GLenum dstFormat) {
 std::vector<ProgramKey> voxelProgramVariants() {
     std::vector<ProgramKey> v;
     const GLenum radianceFormats[] = {GL_RGBA16F, GL_RGBA32F};
+    for (bool big : {false, true}) {
+        v.push_back(voxelizeProgramKey(true, big, false));
+        for (bool twoSided : {false, true}) v.push_back(voxelizeProgramKey(false, big, twoSided));
+    }
     for (bool emission : {false, true})
-        for (bool big : {false, true}) v.push_back(voxelizeProgramKey(emission, big));
-    for (bool emission : {false, true})
-        for (GLenum f : radianceFormats) v.push_back(resolveProgramKey(emission, f));
+        for (GLenum f : radianceFormats)
+            for (bool twoSided : {false, true}) v.push_back(resolveProgramKey(emission, f, twoSided));
     for (GLenum f : radianceFormats)
-        for (int outer = 0; outer <= 7; ++outer) v.push_back(injectProgramKey(f, outer));
+        for (int outer = 0; outer <= 7; ++outer)
+            for (bool twoSided : {false, true}) v.push_back(injectProgramKey(f, outer, twoSided));
     v.push_back(isotropicMipProgramKey(0, false));
     for (GLenum f : radianceFormats)
         for (bool normals : {false, true}) v.push_back(isotropicMipProgramKey(f, normals));

@@ -9,13 +9,14 @@
 namespace vct {
 
 // voxelize.glsl or voxelize_emission.glsl: the geometry or the emission accumulation, small or
-// big-triangle pass.
-ProgramKey voxelizeProgramKey(bool emissionPass, bool bigPass);
+// big-triangle pass; the geometry pass sums the doubleSided weight when `twoSided`.
+ProgramKey voxelizeProgramKey(bool emissionPass, bool bigPass, bool twoSided);
 // resolve.glsl: reads the emission accumulators when the scene has emission; writes emission
-// in `emissionFormat` (GL_RGBA16F or GL_RGBA32F).
-ProgramKey resolveProgramKey(bool hasEmission, GLenum emissionFormat);
-// inject.glsl: radiance in `radianceFormat`; `outerLevels` clipmap levels continue shadow rays.
-ProgramKey injectProgramKey(GLenum radianceFormat, int outerLevels);
+// in `emissionFormat` (GL_RGBA16F or GL_RGBA32F); `twoSided`: the two-sided texture too.
+ProgramKey resolveProgramKey(bool hasEmission, GLenum emissionFormat, bool twoSided);
+// inject.glsl: radiance in `radianceFormat`; `outerLevels` clipmap levels continue shadow rays;
+// `twoSided`: two-sided voxels lit on each face (voxelize_shared.h).
+ProgramKey injectProgramKey(GLenum radianceFormat, int outerLevels, bool twoSided);
 // mip_iso.glsl: opacity, and radiance (radianceFormat != 0) and normals when the grid has them.
 ProgramKey isotropicMipProgramKey(GLenum radianceFormat, bool normals);
 // mip_aniso.glsl: one directional level from `srcFormat` (GL_R16F: the opacity base level).

@@ -19,21 +19,29 @@ namespace vct {
 
 namespace {
 
-// Largest emitted radiance of any material (textures only scale it down): decides whether
-// emission accumulators are needed at all and which float precision the outputs need.
-float maxMaterialEmission(const GpuScene& scene) {
+// What the materials ask of the voxelizer: the largest emitted radiance (textures only scale
+// it down), which decides whether emission accumulators are needed at all and which float
+// precision the outputs need; and whether any is doubleSided (two-sided voxels).
+struct MaterialNeeds {
+    float maxEmission = 0.f;
+    bool doubleSided = false;
+};
+
+MaterialNeeds materialNeeds(const GpuScene& scene) {
     std::vector<gpu::GpuMaterial> materials(std::max(1, scene.materialCount));
     glGetNamedBufferSubData(scene.materials.id(), 0, GLsizeiptr(materials.size() * sizeof(gpu::GpuMaterial)),
                             materials.data());
-    float m = 0.f;
-    for (const gpu::GpuMaterial& mat : materials) {
+    MaterialNeeds needs;
+    for (int i = 0; i < scene.materialCount; ++i) {
+        const gpu::GpuMaterial& mat = materials[size_t(i)];
         for (int c = 0; c < 3; ++c) {
             if (!std::isfinite(mat.emissive[c]))
                 throw std::runtime_error("voxelize: material emission is not finite");
-            m = std::max(m, mat.emissive[c]);
+            needs.maxEmission = std::max(needs.maxEmission, mat.emissive[c]);
         }
+        if ((mat.flags & gpu::MATERIAL_DOUBLE_SIDED) != 0) needs.doubleSided = true;
     }
-    return m;
+    return needs;
 }
 
 // Half floats hold up to 65504; keep a margin for filtering and for the albedo/pi term.
@@ -74,22 +82,25 @@ void accumulateTriangles(const GpuScene& scene, const VoxelGrid& grid, const GlB
 }  // namespace
 
 VoxelGrid voxelizeScene(const GpuScene& scene, const Bounds3& region, int voxelRes, const ParamMap& params,
-                        PassTimer& timer) {
+                        PassTimer& timer, bool lit) {
     for (int a = 0; a < 3; ++a)
         if (!std::isfinite(region.min[a]) || !std::isfinite(region.max[a]))
             throw InternalError("voxelizeScene", "region bounds are not finite");
-    return voxelizeGrid(scene, makeGridLayout(region, voxelRes), params, timer);
+    return voxelizeGrid(scene, makeGridLayout(region, voxelRes), params, timer, "voxelize", lit);
 }
 
 VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& params, PassTimer& timer,
-                       const std::string& scopeName) {
+                       const std::string& scopeName, bool lit) {
     VoxelGrid grid = makeGridLayout(layout.origin, layout.voxelSize, layout.resolution);
+    const MaterialNeeds needs = materialNeeds(scene);
+    const bool twoSided = needs.doubleSided && lit;
     // Refuse a grid this machine cannot hold, before allocating: llvmpipe keeps textures in system
     // memory and an oversized one ends in the OOM killer, not GL_OUT_OF_MEMORY. ~66 bytes per
     // voxel at the peak (accumulators, albedo, normal, radiance, directional mips): 4.4 GB RSS
-    // measured at 512x257x512 (stability suite).
+    // measured at 512x257x512 (stability suite); lit grids of scenes with doubleSided materials
+    // add the doubleSided weight (4) and the two-sided texture (8).
     const double voxels = double(grid.resolution.x) * grid.resolution.y * grid.resolution.z;
-    const double needBytes = 66.0 * voxels, haveBytes = double(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
+    const double needBytes = (twoSided ? 78.0 : 66.0) * voxels, haveBytes = double(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
     if (haveBytes > 0.0 && needBytes > 0.5 * haveBytes)
         throw std::runtime_error("voxel grid " + std::to_string(grid.resolution.x) + "x" +
                                  std::to_string(grid.resolution.y) + "x" + std::to_string(grid.resolution.z) +
@@ -97,30 +108,36 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
                                  "this machine's " + std::to_string(int(haveBytes / 1e9)) +
                                  " GB: lower --voxel-res or use vct.clipmap.levels");
     const VoxelPrecision precision = voxelSettings().read(params).precision;
-    const float maxEmission = maxMaterialEmission(scene);
+    const float maxEmission = needs.maxEmission;
     const bool hasEmission = maxEmission > 0.f;
     const bool useFloat = precision == VoxelPrecision::Float ||
                           (precision == VoxelPrecision::Auto && maxEmission > HALF_SAFE_MAX);
     const GLenum emissionFormat = useFloat ? GL_RGBA32F : GL_RGBA16F;
 
     // Programs first, so a first-use compile is not timed as voxelization.
-    const GLuint resolve = cachedProgram(resolveProgramKey(hasEmission, emissionFormat));
+    const GLuint resolve = cachedProgram(resolveProgramKey(hasEmission, emissionFormat, twoSided));
     GLuint accumulate[2][2] = {};  // [emission pass][big pass]
     for (int e = 0; e < (hasEmission ? 2 : 1); ++e)
-        for (int big = 0; big < 2; ++big) accumulate[e][big] = cachedProgram(voxelizeProgramKey(e != 0, big != 0));
+        for (int big = 0; big < 2; ++big)
+            accumulate[e][big] = cachedProgram(voxelizeProgramKey(e != 0, big != 0, twoSided));
 
     auto scope = timer.scope(scopeName, true, Reruns::WhenSceneChanges);
     const glm::ivec3 res = grid.resolution;
 
-    // Accumulators, zeroed; nearest filtering, as integer textures must be for texelFetch.
-    const int accumulatorCount = hasEmission ? gpu::VOX_ACC_COUNT : gpu::VOX_ACC_EMISSION;
-    std::vector<GlTexture> acc;
-    for (int i = 0; i < accumulatorCount; ++i) {
-        acc.push_back(createTexture3D(GL_R32UI, res.x, res.y, res.z));
-        glTextureParameteri(acc.back().id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTextureParameteri(acc.back().id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    // Accumulators, zeroed; nearest filtering, as integer textures must be for texelFetch. Those
+    // the scene does not need (emission, the doubleSided weight) stay empty.
+    std::vector<GlTexture> acc(size_t(gpu::VOX_ACC_COUNT));
+    auto needed = [&](int i) {
+        if (i == gpu::VOX_ACC_TWO_SIDED) return twoSided;
+        return i < gpu::VOX_ACC_EMISSION || hasEmission;
+    };
+    for (int i = 0; i < gpu::VOX_ACC_COUNT; ++i) {
+        if (!needed(i)) continue;
+        acc[size_t(i)] = createTexture3D(GL_R32UI, res.x, res.y, res.z);
+        glTextureParameteri(acc[size_t(i)].id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(acc[size_t(i)].id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         const GLuint zero = 0;
-        glClearTexImage(acc.back().id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+        glClearTexImage(acc[size_t(i)].id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     }
     // Big-triangle list: header {count, -, -, occupied voxels}, then triangle ids.
     std::vector<uint32_t> header = {0, 1, 1, 0};
@@ -138,7 +155,7 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
         const int first = emissionPass ? gpu::VOX_ACC_EMISSION : 0;
         const int last = emissionPass ? gpu::VOX_ACC_COUNT : gpu::VOX_ACC_EMISSION;
         for (int i = first; i < last; ++i)
-            bindImage3D(GLuint(i - first), acc[size_t(i)].id(), 0, GL_READ_WRITE, GL_R32UI);
+            if (acc[size_t(i)]) bindImage3D(GLuint(i - first), acc[size_t(i)].id(), 0, GL_READ_WRITE, GL_R32UI);
         accumulateTriangles(scene, grid, bigList, accumulate[emissionPass][0], accumulate[emissionPass][1]);
         for (int i = first; i < last; ++i) glBindImageTexture(GLuint(i - first), 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
     }
@@ -149,7 +166,12 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     // Normals carry mips (filled with the radiance's: voxelize/mips.cpp) for the facing test.
     grid.normal = createTexture3D(GL_RGBA16F, res.x, res.y, res.z, grid.levels);
     grid.emission = createTexture3D(emissionFormat, res.x, res.y, res.z);
-    for (int i = 0; i < accumulatorCount; ++i) glBindTextureUnit(GLuint(i), acc[size_t(i)].id());
+    if (twoSided) {
+        grid.twoSided = createTexture3D(GL_RGBA16_SNORM, res.x, res.y, res.z);
+        bindImage3D(gpu::VOX_IMAGE_RESOLVE_TWO_SIDED, grid.twoSided.id(), 0, GL_WRITE_ONLY, GL_RGBA16_SNORM);
+    }
+    for (int i = 0; i < gpu::VOX_ACC_COUNT; ++i)
+        if (acc[size_t(i)]) glBindTextureUnit(GLuint(i), acc[size_t(i)].id());
     bindImage3D(gpu::VOX_IMAGE_RESOLVE_OPACITY, grid.opacity.id(), 0, GL_WRITE_ONLY, GL_R16F);
     bindImage3D(gpu::VOX_IMAGE_RESOLVE_ALBEDO, grid.albedo.id(), 0, GL_WRITE_ONLY, GL_RGBA16F);
     bindImage3D(gpu::VOX_IMAGE_RESOLVE_NORMAL, grid.normal.id(), 0, GL_WRITE_ONLY, GL_RGBA16F);
@@ -164,8 +186,8 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     grid.occupiedVoxels = occupied;
 
     // Leave nothing bound to the (about to be freed) accumulators.
-    for (int i = 0; i < accumulatorCount; ++i) glBindTextureUnit(GLuint(i), 0);
-    for (int i = gpu::VOX_IMAGE_RESOLVE_OPACITY; i <= gpu::VOX_IMAGE_RESOLVE_EMISSION; ++i)
+    for (int i = 0; i < gpu::VOX_ACC_COUNT; ++i) glBindTextureUnit(GLuint(i), 0);
+    for (int i = gpu::VOX_IMAGE_RESOLVE_OPACITY; i <= gpu::VOX_IMAGE_RESOLVE_TWO_SIDED; ++i)
         glBindImageTexture(GLuint(i), 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
     glUseProgram(0);
     grid.memoryBytes = voxelGridMemoryBytes(grid);

@@ -25,14 +25,16 @@ namespace vct {
 // candidate voxel; no holes for thin, sub-voxel or axis-aligned triangles). Averages are
 // order independent (integer atomics), so the same input gives the same grid bit for bit.
 // Fills opacity (level 0; 1 where any triangle overlaps), albedo, normal, emission,
-// occupiedVoxels and memoryBytes. Timer scope "voxelize".
+// occupiedVoxels and memoryBytes; `lit` (the grid will be lit by injectRadiance) also the
+// two-sided texture where a material is doubleSided, which only injection reads. Timer scope
+// "voxelize".
 VoxelGrid voxelizeScene(const GpuScene& scene, const Bounds3& region, int voxelRes,
-                        const ParamMap& params, PassTimer& timer);
+                        const ParamMap& params, PassTimer& timer, bool lit = true);
 
 // The same into a given layout (makeGridLayout; textures of `layout` are ignored): clipmap
 // levels whose origins and voxel sizes must nest exactly. Timer scope `scopeName`.
 VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& params, PassTimer& timer,
-                       const std::string& scopeName = "voxelize");
+                       const std::string& scopeName = "voxelize", bool lit = true);
 
 // Writes grid.radiance level 0: premultiplied (L * opacity, opacity), where L = emission +
 // albedo / pi * sum of the punctual lights' irradiance on the voxel's average normal, each

@@ -117,6 +117,7 @@ TEST(VdbCone, EmitterSeenFromBehindPassesNoLight) {
         Scene s;
         const uint32_t floorMat = vcttest::addMaterial(s, glm::vec3(albedo));
         const uint32_t lamp = vcttest::addMaterial(s, glm::vec3(0.f), glm::vec3(Le));
+        s.materials[lamp].doubleSided = false;  // emits from its front only (glTF culls the back)
         vcttest::addQuad(s, {-2, 0, -2}, {0, 0, 4}, {4, 0, 0}, floorMat);
         // A 64-voxel grid over the 4 m floor padded by one voxel each side: 4 / 62 m voxels.
         const float voxel = 4.f / 62.f, h = 2.5f * voxel;

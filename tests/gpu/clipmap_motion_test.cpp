@@ -138,7 +138,9 @@ void expectShifted(const Clipmap& a, const Clipmap& b, int level, int shift) {
         std::printf("level %d %s: %zu nonzero values, %zu differ after the shift, largest difference %g\n", level,
                     name, occupied, differ, worst);
         EXPECT_GT(occupied, 100u) << name;
-        if (level > 0) EXPECT_GT(nestedBoth, 1000u) << "the nested voxels were not compared";
+        if (level > 0) {
+            EXPECT_GT(nestedBoth, 1000u) << "the nested voxels were not compared";
+        }
         EXPECT_EQ(differ, 0u) << "level " << level << " " << name << ": the shifted cascade resampled its voxels";
     }
 }

@@ -232,10 +232,11 @@ TEST(StabilityParams, ClosedEmissiveBoxConverges) {
     const double limit = Le / (1 - rho);
     const std::string name = "closed box, rho 0.8, all emit";
     recordCaseInfo(name, "inside a closed 2^3 box, every wall Le = 1 and rho = 0.8, sky 0; vct 8 bounces, reference 64. "
-                         "The walls are wound outwards with doubleSided materials: the reference lights and sees both "
-                         "faces; vct treats every surface as one-sided by its winding (injection and vox_facingWeight), "
-                         "so from inside it sees the walls' backs and stays dark (0.37 before radiance left voxels "
-                         "from their fronts only).",
+                         "The walls are wound outwards with doubleSided materials: both renderers light and see both "
+                         "faces. vct's two-sided voxels emit from both faces alike, and a voxel whose faces are equally "
+                         "bright gathers its bounces on its front (here the outside), so inside the box vct sees the "
+                         "walls' emission and one reflection of it, not the bounces (0.23 when every surface was "
+                         "one-sided by its winding).",
                    "beauty (Le + direct + indirect) / the infinite-bounce limit Le / (1 - rho) = 5: max over pixels "
                    "(must stay <= 1; the reference's per-pixel max carries its noise) and mean (1 when converged).");
     for (const auto& m : giMethodColumns()) {
