@@ -184,6 +184,27 @@ std::vector<AoConvergenceCase> aoConvergenceCases() {
             for (float z : {0.05f, 0.15f, 0.3f, 0.6f, 1.1f}) cb.c.points.emplace_back(x * R, 0.f, z * R);
         add(cb.finish(8.f * R), {glm::vec3(0.f, 0.5f, 0.5f), glm::vec3(0.5f, 0.5f, 0.f)}, glm::vec3(1, 0, 0));
     }
+    // Closed rooms: four walls and a ceiling on the floor, each one sheet. In a room whose
+    // diagonal is shorter than R nothing is open (exact AO 0 at every point): all VCT reports
+    // there crossed a wall. A room taller and wider than R is open only where R falls short of
+    // its walls.
+    for (auto [side, height] : {std::pair<float, float>{0.6f, 0.4f}, {1.6f, 1.2f}}) {
+        CaseBuilder cb("room", "room " + fmt(side) + "R x " + fmt(height) + "R off");
+        const float h = side / 2, y = height / 2;
+        for (float sx : {-1.f, 1.f}) {
+            addRect(cb.b, cb.c.occluders, "wall_x",
+                    AnalyticRect{glm::vec3(sx * h, y, 0.f), glm::vec3(0.f, y, 0.f), glm::vec3(0.f, 0.f, h)},
+                    cb.occluderMaterial);
+            addRect(cb.b, cb.c.occluders, "wall_z",
+                    AnalyticRect{glm::vec3(0.f, y, sx * h), glm::vec3(h, 0.f, 0.f), glm::vec3(0.f, y, 0.f)},
+                    cb.occluderMaterial);
+        }
+        addRect(cb.b, cb.c.occluders, "ceiling",
+                AnalyticRect{glm::vec3(0.f, height, 0.f), glm::vec3(h, 0.f, 0.f), glm::vec3(0.f, 0.f, h)},
+                cb.occluderMaterial);
+        cb.c.points = floorGrid(-0.9f * h, 0.9f * h);
+        add(cb.finish(8.f * R), {glm::vec3(0.f, height, 0.f), glm::vec3(h / 2, height, 0.f)}, glm::vec3(0, -1, 0));
+    }
     // Spheres above the floor (on the axis, AO = 1 - (r/d)^2 once R >= d).
     for (auto [radius, height] : {std::pair<float, float>{0.25f, 0.6f}, {0.5f, 0.8f}}) {
         CaseBuilder cb("sphere", "sphere r=" + fmt(radius) + "R d=" + fmt(height) + "R off");

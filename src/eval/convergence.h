@@ -1,6 +1,6 @@
 // The convergence harness of voxel cone tracing: families of closed-form AO cases (plates
 // and discs above a floor at heights and sizes around R, a wall, a right-angle corner, a
-// sphere above a plane), each scored at 25 fixed floor points, some within R of an
+// sphere above a plane, closed rooms), each scored at 25 fixed floor points, some within R of an
 // occluder's edge. Every point has three values: the exact AO and the cone model of VCT's
 // cone set, both by analytic quadrature (eval/analytic_ao.h), and what VCT computes there
 // through the registry's method (dense or sparse, any resolution and --param), on a G-buffer
@@ -24,7 +24,7 @@
 namespace vct {
 
 struct AoConvergenceCase {
-    std::string family;  // plate, disc, wall, corner, sphere
+    std::string family;  // plate, slab, disc, wall, corner, room, sphere
     std::string name;    // e.g. "plate h=0.5R a=2R off"
     float radius = 1.f;  // R
     Scene scene;         // the floor and the occluders as triangles

@@ -24,11 +24,15 @@ struct CaseErrors {
     std::map<int, double> voxel;  // resolution -> RMS of VCT - cone model
 };
 
+// `rooms`: the closed rooms too. Neither march converges there (docs/convergence.md: cones
+// cross the one-voxel walls, the default march's error 0.03 / 0.13 / 0.14 at 32^3..128^3 in the
+// room that leaves nothing open, the lanes' 0.06 / 0.12 / 0.13), so the convergence claims below
+// are made for the open families, and the rooms are held to what the backends share.
 std::vector<CaseErrors> voxelErrors(const std::vector<int>& resolutions, const std::string& backend,
-                                    const ParamMap& p) {
+                                    const ParamMap& p, bool rooms = false) {
     std::vector<CaseErrors> out;
     for (const AoConvergenceCase& c : aoConvergenceCases()) {
-        if (c.onScreen) continue;
+        if (c.onScreen || (c.family == "room" && !rooms)) continue;
         const std::vector<double> model = coneModelAoAt(c, p);
         CaseErrors e{c.name, {}};
         for (int res : resolutions) e.voxel[res] = pointError(vctAoAt(c, res, backend, p), model).rms;
@@ -67,8 +71,8 @@ TEST(VctConvergence, LanesOnACubicGridDriveTheVoxelErrorDown) {
 
 TEST(VctConvergence, SparseLanesMatchTheDenseOnes) {
     const ParamMap lanes = params({"vct.lanes=0", "vct.grid=cube"});
-    const std::vector<CaseErrors> dense = voxelErrors({64}, "gl", lanes);
-    const std::vector<CaseErrors> sparse = voxelErrors({64}, "vdb", lanes);
+    const std::vector<CaseErrors> dense = voxelErrors({64}, "gl", lanes, true);
+    const std::vector<CaseErrors> sparse = voxelErrors({64}, "vdb", lanes, true);
     ASSERT_EQ(dense.size(), sparse.size());
     for (size_t i = 0; i < dense.size(); ++i)
         EXPECT_NEAR(sparse[i].voxel.at(64), dense[i].voxel.at(64), 2e-3) << dense[i].name;
