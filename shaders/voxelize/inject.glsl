@@ -164,7 +164,7 @@ void main() {
             Eb += inject_lightIrradiance(i, pWorld, pVoxel, -front);
         }
         vec3 Lf = min(L + albedo / PI * Ef, vec3(RADIANCE_MAX)), Lb = min(L + albedo / PI * Eb, vec3(RADIANCE_MAX));
-        float k = vox_twoSidedNormalScale(max(Lf.r, max(Lf.g, Lf.b)), max(Lb.r, max(Lb.g, Lb.b)));
+        float k = vox_twoSidedNormalScale(Lf, Lb);
         imageStore(outNormal, v, vec4(front * k, 1.0));
         imageStore(outRadiance, v, vec4((k >= 0.0 ? Lf : Lb) * alpha, alpha));
         return;

@@ -93,5 +93,10 @@ VOX_FN float vox_twoSidedNormalScale(float front, float back) {
     float k = max(max(0.5f * (1.0f - r), 1.0f - 8.0f * r), VOX_TWO_SIDED_MIN_SCALE);
     return front >= back ? k : -k;
 }
+// The same for the faces' radiances, compared by their max components (what both backends'
+// injection passes).
+VOX_FN float vox_twoSidedNormalScale(vec3 front, vec3 back) {
+    return vox_twoSidedNormalScale(max(front.x, max(front.y, front.z)), max(back.x, max(back.y, back.z)));
+}
 
 VCT_END_NAMESPACE

@@ -156,8 +156,7 @@ void injectSparseRadiance(SparseVoxelScene& voxels, const Scene& scene, float sh
                     }
                     const glm::vec3 Lf = glm::min(emitted + albedo / kPi * Ef, glm::vec3(kFloatMax));
                     const glm::vec3 Lb = glm::min(emitted + albedo / kPi * Eb, glm::vec3(kFloatMax));
-                    const float k = gpu::vox_twoSidedNormalScale(std::max(Lf.x, std::max(Lf.y, Lf.z)),
-                                                                 std::max(Lb.x, std::max(Lb.y, Lb.z)));
+                    const float k = gpu::vox_twoSidedNormalScale(Lf, Lb);
                     const glm::vec3 f = front * k, L = (k >= 0.f ? Lf : Lb) * alpha;
                     facingAcc->setValueOnly(ijk, openvdb::Vec3s(f.x, f.y, f.z));
                     outLeaf.setValueOnly(it.pos(), openvdb::Vec3s(L.x, L.y, L.z));

@@ -275,7 +275,7 @@ SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject
     const float offset = voxelSettings().read(params).injectOffset;
     const BounceSettings bounce = bounceSettings().read(params);
     SparseVoxelScene voxels =
-        voxelizeSparse(scene, options.region.empty() ? scene.bounds : options.region, voxelRes);
+        voxelizeSparse(scene, options.region.empty() ? scene.bounds : options.region, voxelRes, inject);
     if (inject) {
         injectSparseRadiance(voxels, scene, offset);
         // The bounces trace with the pixel cones' settings, as the GPU path's.
@@ -283,8 +283,6 @@ SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject
         traceSparseBounces(voxels, bounce.sky ? sky : 0.f, readConeSettings(params), bounce.bounces,
                            options.anisotropic);
         voxels.stats.bounceSeconds = secondsSince(t0);
-    } else {
-        voxels.twoSided.reset();  // only injection reads it
     }
     buildSparseLevels(voxels, options.anisotropic);
     // Collapse constant blocks into tiles (tolerance 0: values are kept exactly).

@@ -199,7 +199,7 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, int voxelRes) {
     return voxelizeSparse(scene, scene.bounds, voxelRes);
 }
 
-SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int voxelRes) {
+SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int voxelRes, bool lit) {
     ensureOpenVdb();
     checkScene(scene);
     const auto t0 = std::chrono::steady_clock::now();
@@ -239,12 +239,16 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
     auto albedo = std::make_shared<openvdb::Vec3STree>(topology, zero, zero, openvdb::TopologyCopy());
     auto normal = std::make_shared<openvdb::Vec3STree>(topology, zero, zero, openvdb::TopologyCopy());
     auto emission = std::make_shared<openvdb::Vec3STree>(topology, zero, zero, openvdb::TopologyCopy());
-    // The doubleSided share of each voxel's weight (resolve.glsl's two-sided texture), only when
-    // a material is doubleSided.
-    const bool twoSided = std::any_of(scene.materials.begin(), scene.materials.end(),
-                                      [](const Material& m) { return m.doubleSided; });
-    auto twoSidedShare = std::make_shared<openvdb::FloatTree>(topology, 0.f, 0.f, openvdb::TopologyCopy());
-    openvdb::tree::LeafManager<openvdb::FloatTree> twoSidedLeaves(*twoSidedShare);
+    // The doubleSided share of each voxel's weight (resolve.glsl's two-sided texture), only for
+    // lit voxels of a scene with a doubleSided material.
+    const bool twoSided = lit && std::any_of(scene.materials.begin(), scene.materials.end(),
+                                             [](const Material& m) { return m.doubleSided; });
+    std::shared_ptr<openvdb::FloatTree> twoSidedShare;
+    std::unique_ptr<openvdb::tree::LeafManager<openvdb::FloatTree>> twoSidedLeaves;
+    if (twoSided) {
+        twoSidedShare = std::make_shared<openvdb::FloatTree>(topology, 0.f, 0.f, openvdb::TopologyCopy());
+        twoSidedLeaves = std::make_unique<openvdb::tree::LeafManager<openvdb::FloatTree>>(*twoSidedShare);
+    }
     openvdb::tree::LeafManager<openvdb::FloatTree> opacityLeaves(*opacity);
     openvdb::tree::LeafManager<openvdb::Vec3STree> albedoLeaves(*albedo), normalLeaves(*normal),
         emissionLeaves(*emission);
@@ -290,7 +294,7 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
                 alLeaf.setValueOnly(offset, a);
                 nrLeaf.setValueOnly(offset, n);
                 emLeaf.setValueOnly(offset, e);
-                if (twoSided) twoSidedLeaves.leaf(li).setValueOnly(offset, float(s.twoSidedWeight) / weight);
+                if (twoSidedLeaves) twoSidedLeaves->leaf(li).setValueOnly(offset, float(s.twoSidedWeight) / weight);
             }
         }
     });

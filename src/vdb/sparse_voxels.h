@@ -113,8 +113,10 @@ SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject
 
 // The steps of buildSparseVoxels, for tests and tools.
 SparseVoxelScene voxelizeSparse(const Scene& scene, int voxelRes);
-// Over `region` instead of the scene's bounds: triangles outside it are left out.
-SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int voxelRes);
+// Over `region` instead of the scene's bounds: triangles outside it are left out. `lit` (the
+// voxels will be injected): also the two-sided share where a material is doubleSided, which
+// only injection reads (voxelizeGrid's `lit`).
+SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int voxelRes, bool lit = true);
 void injectSparseRadiance(SparseVoxelScene& voxels, const Scene& scene, float shadowOffsetVoxels);
 void buildSparseLevels(SparseVoxelScene& voxels, bool anisotropic = false);
 // Recomputes stats.memoryBytes / denseBytes / activeVoxels from the grids held.
