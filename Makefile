@@ -59,7 +59,7 @@ results: build
 	python3 scripts/make_results.py --vct ./$(BUILD)/vct
 
 # Regenerates the convergence tables of docs/convergence.md (both backends, 32^3..256^3; the
-# default march and the lanes on a cubic grid).
+# default march, the lanes on a cubic grid, and those lanes over optical-depth levels).
 convergence: build
 	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend gl --markdown docs/convergence_gl.md
 	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend vdb --markdown docs/convergence_vdb.md
@@ -67,6 +67,8 @@ convergence: build
 		--markdown docs/convergence_gl_lanes.md
 	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend vdb --param vct.lanes=0 --param vct.grid=cube \
 		--markdown docs/convergence_vdb_lanes.md
+	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend gl --param vct.lanes=0 --param vct.grid=cube \
+		--param vct.opacity=depth --markdown docs/convergence_gl_lanes_depth.md
 
 clean:
 	rm -rf $(BUILD) $(ASAN_BUILD) out

@@ -4,6 +4,7 @@
 // Defines: CONE_GI (1: premultiplied radiance + alpha from grid.radiance; 0: alpha only from
 // grid.opacity), CONE_ANISO (1: blend the six directional textures above level 0).
 #include "cone/cone_common.glsl"
+#include "voxelize/opacity_depth.h"
 
 layout(binding = CONE_UNIT_OPACITY) uniform sampler3D cone_isoTexture;
 #if CONE_GI
@@ -35,6 +36,12 @@ vec4 cone_sampleAniso(vec3 tc, vec3 d, float lod) {
     vec4 x = d.x >= 0.0 ? textureLod(cone_anisoPX, tc, lod) : textureLod(cone_anisoNX, tc, lod);
     vec4 y = d.y >= 0.0 ? textureLod(cone_anisoPY, tc, lod) : textureLod(cone_anisoNY, tc, lod);
     vec4 z = d.z >= 0.0 ? textureLod(cone_anisoPZ, tc, lod) : textureLod(cone_anisoNZ, tc, lod);
+    if (u.camera.w > 0.5) {
+        // Optical-depth levels: filtered as depth, composited as opacity.
+        x = vox_alphaFromDepth(x);
+        y = vox_alphaFromDepth(y);
+        z = vox_alphaFromDepth(z);
+    }
     return cone_blendDirectional(w, x, y, z);
 }
 #endif
@@ -47,7 +54,15 @@ vec4 cone_sampleGrid(vec3 p, vec3 d, float lod) {
     // Between the base level and the first directional level: blend as trilinear
     // filtering blends two mip levels. (One directional fetch on both paths: on SIMD
     // hardware and llvmpipe a divergent branch would run both.)
-    if (lod < 1.0) directional = mix(cone_sampleIso(tc, 0.0), directional, lod);
+    if (lod < 1.0) {
+        // With optical-depth levels the two levels blend as depth (the base level's 0 / 1
+        // voxels filter to VOX_DEPTH_MAX times their opacity).
+        if (u.camera.w > 0.5)
+            directional = vox_alphaFromDepth(mix(vox_depthFromCoverage(cone_sampleIso(tc, 0.0)),
+                                                 vox_depthFromAlpha(directional), lod));
+        else
+            directional = mix(cone_sampleIso(tc, 0.0), directional, lod);
+    }
     return directional;
 #else
     return cone_sampleIso(tc, lod);

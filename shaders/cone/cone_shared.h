@@ -84,7 +84,8 @@ struct ConeUniforms {
     vec4 march;            // x = tan(aperture / 2), y = step factor beta, z = offset (voxels), w = max alpha
     vec4 limits;           // x = max distance (voxels), y = sky radiance, z = falloff lambda (1/voxels),
                            // w = plane-limit ratio (0 = off)
-    vec4 camera;           // x = tan(yfov / 2) * aspect, y = tan(yfov / 2), z = ray step (voxels), w unused
+    vec4 camera;           // x = tan(yfov / 2) * aspect, y = tan(yfov / 2), z = ray step (voxels),
+                           // w = 1: the directional levels hold optical depth (opacity_depth.h)
     ivec4 config;          // x = cone count, y = AO mapping, z = mip level (rayMarch), w = channel (rayMarch)
     ivec4 image;           // x = width, y = height, z = cone jitter (1: rotate per pixel), w = its seed
     vec4 cones[CONE_MAX_CONES];  // xyz = direction in the tangent frame (z = normal), w = weight

@@ -1,8 +1,11 @@
 // One level of one directional (anisotropic) texture (Crassin 2011): for a cone travelling
 // along +axis (uSign = 1) or -axis (uSign = -1), the children of each line along the axis
 // are composited front to back (premultiplied: c = c_front + (1 - a_front) c_back), and the
-// lines across the axis are averaged.
+// lines across the axis are averaged. With optical-depth levels (opacity_depth.h) the
+// composite runs on opacity as before; only what is read from a directional level and what
+// is stored is converted.
 #include "voxelize/voxelize_shared.h"
+#include "voxelize/opacity_depth.h"
 #include "voxelize/mip_common.glsl"
 
 layout(local_size_x = VOX_GRID_GROUP, local_size_y = VOX_GRID_GROUP, local_size_z = VOX_GRID_GROUP) in;
@@ -14,12 +17,16 @@ uniform ivec3 uSrcSize;
 uniform ivec3 uDstSize;
 uniform int uAxis;  // 0, 1, 2
 uniform int uSign;  // +1 or -1: direction of travel
+uniform int uDepthIn;   // 1: the source is a directional level holding optical depth
+uniform int uDepthOut;  // 1: store optical depth (vox_depthFromAlpha)
 
 vec4 mip_source(ivec3 p) {
 #ifdef SOURCE_OPACITY
     return vec4(0.0, 0.0, 0.0, imageLoad(src, p).r);
 #else
-    return imageLoad(src, p);
+    vec4 s = imageLoad(src, p);
+    if (uDepthIn != 0) s = vox_alphaFromDepth(s);
+    return s;
 #endif
 }
 
@@ -44,5 +51,7 @@ void main() {
             sum += acc;
         }
     float lines = float((hi[b] - lo[b] + 1) * (hi[c] - lo[c] + 1));
-    imageStore(dst, v, sum / lines);
+    vec4 mean = sum / lines;
+    if (uDepthOut != 0) mean = vox_depthFromAlpha(mean);
+    imageStore(dst, v, mean);
 }

@@ -72,7 +72,7 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
     GlTexture next = createTexture3D(format, res.x, res.y, res.z);
     glCopyImageSubData(grid.radiance.id(), GL_TEXTURE_3D, 0, 0, 0, 0, direct.id(), GL_TEXTURE_3D, 0, 0, 0, 0, res.x,
                        res.y, res.z);
-    GlBuffer ubo = bindConeUniforms(coneUniforms(true, grid, 2.f * diagonal, bounceSky ? sky : 0.f, cone));
+    GlBuffer ubo;  // bound after each bounce's mips: the uniforms say how the levels encode opacity
     // The gathering voxels, one list per slab of z slices (voxelListSlabs).
     struct Slab {
         VoxelListSlab range;
@@ -90,7 +90,8 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
     }
     for (int i = 0; i < bounces; ++i) {
         // The mips (and the directional textures, rebuilt anew) of the previous total.
-        buildMips(grid, cone.anisotropic, mipsTimer, "bounce_mips");
+        buildMips(grid, cone.anisotropic, mipsTimer, "bounce_mips", cone.anisotropic && cone.opacity == ConeOpacity::Depth);
+        ubo = bindConeUniforms(coneUniforms(true, grid, 2.f * diagonal, bounceSky ? sky : 0.f, cone));
         const bool aniso = bindGridTextures(true, grid, cone);
         glBindTextureUnit(gpu::CONE_UNIT_BOUNCE_DIRECT, direct.id());
         glBindTextureUnit(gpu::CONE_UNIT_BOUNCE_ALBEDO, grid.albedo.id());

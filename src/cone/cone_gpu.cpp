@@ -48,6 +48,7 @@ gpu::ConeUniforms coneUniforms(bool gi, const VoxelGrid& grid, float maxDistWorl
     const std::vector<glm::vec4>& cones = lanes.cones;
     u.config = glm::ivec4(int(cones.size()), gi ? gpu::CONE_AO_LINEAR : int(settings.aoMapping), 0, 0);
     for (size_t i = 0; i < cones.size(); ++i) u.cones[i] = cones[i];
+    u.camera.w = grid.depthLevels && useAniso(grid, settings) ? 1.f : 0.f;
     return u;
 }
 

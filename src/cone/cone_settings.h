@@ -2,7 +2,8 @@
 // their reasons live in shaders/cone/cone_shared.h (CONE_DEFAULT_*).
 //
 // Keys, defaults, ranges and docs: coneSettings() (vct.cones, vct.aperture, vct.step,
-// vct.offset, vct.max-alpha, vct.aniso, vct.ao-mapping, vct.plane-limit, vct.lanes, vct.jitter).
+// vct.offset, vct.max-alpha, vct.aniso, vct.ao-mapping, vct.plane-limit, vct.lanes, vct.jitter,
+// vct.opacity).
 //
 // AO mappings: `linear` A = 1 - sum_c w_c alpha_c, where alpha_c is cone c's opacity
 // accumulated within R; with cosine-lobe weights w_c this estimates A_R, the cosine-weighted
@@ -22,6 +23,10 @@
 namespace vct {
 
 enum class ConeAoMapping { Linear, Falloff };
+// What the directional levels hold and interpolate: opacity (Crassin 2011), or optical depth
+// (shaders/voxelize/opacity_depth.h), whose trilinear filter along a ray passes exactly a
+// texel's own transmittance (a one-texel wall crossed under opacity filtering passes ~13%).
+enum class ConeOpacity { Alpha, Depth };
 
 struct ConeSettings {
     int coneCount = gpu::CONE_DEFAULT_COUNT;
@@ -34,6 +39,7 @@ struct ConeSettings {
     bool planeLimit = true;         // limit the footprint by the height above the tangent plane
     int lanes = 1;                  // lanes per cone (cone/cone_set.h); 0 = auto, (res / 32)^2
     bool jitter = false;            // turn the set about the normal per pixel (cone_jitterAngle)
+    ConeOpacity opacity = ConeOpacity::Alpha;  // vct.opacity: the directional levels' encoding
     uint32_t seed = 0;              // the render's seed, for the jitter: set by the caller, not a --param
 
     // Throws InternalError naming the field if a value is outside its range.
@@ -53,5 +59,6 @@ ConeSettings readConeSettings(const ParamMap& params);  // coneSettings().read(p
 inline uint32_t coneJitterSeed(uint64_t seed) { return uint32_t(seed) ^ uint32_t(seed >> 32); }
 
 std::string toString(ConeAoMapping m);
+std::string toString(ConeOpacity o);
 
 }  // namespace vct

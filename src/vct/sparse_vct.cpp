@@ -19,8 +19,10 @@ SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache, const 
     SparseBuildOptions options;
     options.region = region.bounds;
     options.anisotropic = cone.anisotropic;
+    options.depthLevels = cone.anisotropic && cone.opacity == ConeOpacity::Depth;
     // Lights that move rebuild the sparse grids whole (they are built and lit in one pass).
-    const std::string key = voxelGridKey(r, inject, options.anisotropic) + ";region=" + boundsKey(region.bounds) +
+    const std::string key = voxelGridKey(r, inject, options.anisotropic) + (options.depthLevels ? ";depth" : "") +
+                            ";region=" + boundsKey(region.bounds) +
                             (inject ? ";lights=" + lightsKey(ctx.scene) : std::string());
     // A camera path with a view-fitted region asks for new grids as it moves: keep a few.
     if (!cache.grids.count(key) && cache.grids.size() >= kMaxCachedVolumes) cache.grids.clear();
@@ -43,6 +45,7 @@ SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache, const 
                            {"inject_s", sv.stats.injectSeconds},
                            {"levels_s", sv.stats.levelsSeconds},
                            {"mips", sv.anisotropic() ? "anisotropic" : "isotropic"},
+                           {"level_opacity", sv.depthLevels ? "depth" : "alpha"},
                            {"region", region.toJson()},
                            {"bounce_s", sv.stats.bounceSeconds},
                            {"bounces", inject ? readVctBounces(r.params) : 0}};

@@ -49,7 +49,12 @@ void declareVoxelPasses(const PlanContext& ctx, PassDeclarations& d) {
                "grid; timed as 'bounce')"});
     std::vector<ResourceId> mipReads{kVoxels};
     if (radiance) mipReads.push_back(kVoxelRadiance);
-    d.add({kPassMips, mipReads, {kVoxelMips}, "filtered levels for wide cones"});
+    const ConeSettings cone = readConeSettings(r.params);
+    d.add({kPassMips, mipReads, {kVoxelMips},
+           std::string("filtered levels for wide cones") +
+               (cone.anisotropic && cone.opacity == ConeOpacity::Depth
+                    ? "; the directional levels hold optical depth (vct.opacity=depth)"
+                    : "")});
 }
 
 // The cones a cone pass marches, for --explain: the set, and its lanes when there are more

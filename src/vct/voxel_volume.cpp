@@ -1,6 +1,7 @@
 #include "vct/voxel_volume.h"
 
 #include "cone/cone_bounce.h"
+#include "core/errors.h"
 #include "gl/context.h"
 #include "vct/vct_passes.h"
 #include "vct/voxel_region.h"
@@ -77,7 +78,7 @@ void lightAndFilter(MethodContext& ctx, VoxelGrid& grid, const ConeSettings& con
         traceVoxelBounces(grid, ctx.request.sky, cone, ctx.request.params, ctx.timer);
         gl.checkErrors("bounce");
     }
-    buildMips(grid, aniso, ctx.timer);
+    buildMips(grid, aniso, ctx.timer, "mips", aniso && cone.opacity == ConeOpacity::Depth);
     gl.checkErrors("mips");
     ctx.runCounts["mips"]++;
 }
@@ -101,7 +102,11 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
     const VoxelRegion region = chooseVoxelRegion(r, ctx.scene, ctx.gbuffer, cone.apertureDeg, cone.offsetVoxels);
     // Clipmaps keep isotropic mips only (clipmap/clipmap.h).
     const bool aniso = levels == 0 && cone.anisotropic;
+    if (levels > 0 && cone.opacity == ConeOpacity::Depth)
+        throw UsageError("--param vct.opacity=depth: clipmaps keep isotropic levels only (vct.clipmap.levels=" +
+                         std::to_string(levels) + "); use the dense grid or the sparse backend");
     std::string key = voxelGridKey(r, inject, aniso) + ";region=" + boundsKey(region.bounds);
+    if (aniso && cone.opacity == ConeOpacity::Depth) key += ";depth";
     // A clipmap is its layout: the cascades' origins snap to their voxels, so a camera moving
     // less than a snap step keeps the same cascades (the same voxels), a larger move builds new ones.
     const std::string lights = inject ? lightsKey(ctx.scene) : std::string();
@@ -172,6 +177,7 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
                    {"occupied", g.occupiedVoxels},
                    {"memory_bytes", g.memoryBytes},
                    {"mips", g.anisotropic ? "anisotropic" : "isotropic"},
+                   {"level_opacity", g.depthLevels ? "depth" : "alpha"},
                    {"dense_voxels", size_t(g.resolution.x) * g.resolution.y * g.resolution.z}};
     }
     v.stats["region"] = region.toJson();

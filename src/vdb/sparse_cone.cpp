@@ -9,6 +9,7 @@
 #include "cone/cone_set.h"
 #include "core/errors.h"
 #include "util/progress.h"
+#include "voxelize/opacity_depth.h"
 
 #include <openvdb/tools/Interpolation.h>
 #include <tbb/blocked_range.h>
@@ -48,8 +49,10 @@ struct LevelSampler {
     // Texture fetches as the GPU's volume counts them (cone/cone_cost.h): one per textureLod
     // the shader would make, whatever levels the CPU blends for it.
     double fetches = 0.0;
+    bool depth = false;  // the directional levels hold optical depth (opacity_depth.h)
 
-    LevelSampler(const SparseVoxelScene& v, const MarchParams& params, bool gi) : mp(&params) {
+    LevelSampler(const SparseVoxelScene& v, const MarchParams& params, bool gi)
+        : mp(&params), depth(v.depthLevels) {
         for (const auto& g : v.opacityLevels) opacity.push_back(std::make_unique<OpacityAcc>(g->tree()));
         if (gi) {
             for (const auto& g : v.radianceLevels) radiance.push_back(std::make_unique<RadianceAcc>(g->tree()));
@@ -111,7 +114,10 @@ struct LevelSampler {
     glm::vec4 sampleAniso(const glm::vec3& p, const glm::vec3& d, float lod) {
         const size_t dx = d.x >= 0.f ? 0 : 1, dy = d.y >= 0.f ? 2 : 3, dz = d.z >= 0.f ? 4 : 5;
         auto along = [&](size_t dir) {
-            return acrossLevels(std::max(lod, 1.f), [&](int level) { return sampleDirectional(p, dir, level); });
+            // Optical-depth levels filter (across levels too) as depth and composite as opacity.
+            const glm::vec4 s =
+                acrossLevels(std::max(lod, 1.f), [&](int level) { return sampleDirectional(p, dir, level); });
+            return depth ? gpu::vox_alphaFromDepth(s) : s;
         };
         return gpu::cone_blendDirectional(gpu::cone_anisoWeights(d), along(dx), along(dy), along(dz));
     }
@@ -126,7 +132,13 @@ struct LevelSampler {
         }
         fetches += lod < 1.f ? 4.0 : 3.0;
         glm::vec4 directional = sampleAniso(p, d, lod);
-        if (lod < 1.f) directional = glm::mix(sampleLevel(p, 0), directional, std::max(lod, 0.f));
+        if (lod < 1.f) {
+            if (depth)
+                directional = gpu::vox_alphaFromDepth(glm::mix(gpu::vox_depthFromCoverage(sampleLevel(p, 0)),
+                                                              gpu::vox_depthFromAlpha(directional), std::max(lod, 0.f)));
+            else
+                directional = glm::mix(sampleLevel(p, 0), directional, std::max(lod, 0.f));
+        }
         return directional;
     }
 
@@ -304,7 +316,7 @@ void traceSparseBounces(SparseVoxelScene& voxels, float sky, const ConeSettings&
     // Minutes at 1024^3 on a few cores: a bar on a terminal, in leaf nodes of 8^3 voxels.
     ProgressBar progress("vdb bounces", uint64_t(bounces) * uint64_t(direct->tree().leafCount()), true);
     for (int bounce = 0; bounce < bounces; ++bounce) {
-        buildSparseLevels(voxels, anisotropic);
+        buildSparseLevels(voxels, anisotropic, anisotropic && settings.opacity == ConeOpacity::Depth);
         const MarchParams mp = marchParams(voxels, settings);
         openvdb::Vec3SGrid::Ptr next = direct->deepCopy();
         openvdb::tree::LeafManager<openvdb::Vec3STree> leaves(next->tree());

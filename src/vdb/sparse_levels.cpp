@@ -12,6 +12,7 @@
 #include "cone/cone_settings.h"
 #include "vdb/sparse_cone.h"
 #include "core/errors.h"
+#include "voxelize/opacity_depth.h"
 #include "voxelize/voxel_settings.h"
 
 #include <openvdb/tools/Prune.h>
@@ -136,7 +137,9 @@ void buildLevel(SparseVoxelScene& voxels, int level) {
 // Directional level `level` (>= 1) for every direction d, as mip_aniso.glsl: from level 0's
 // opacity and radiance when level == 1, else from directional[d][level - 2]. The parents are
 // the isotropic level's active voxels (the same topology: a parent with any child).
-void buildDirectionalLevel(SparseVoxelScene& voxels, int level) {
+// With `depth` the levels hold optical depth (opacity_depth.h): what is read from a directional
+// level is converted to opacity, composited as opacity, and stored as depth.
+void buildDirectionalLevel(SparseVoxelScene& voxels, int level, bool depth) {
     const glm::ivec3 src = voxels.levelSize(level - 1), dst = voxels.levelSize(level);
     const bool hasRadiance = voxels.injected();
     const openvdb::FloatTree& parents = voxels.opacityLevels[size_t(level)]->tree();
@@ -182,15 +185,17 @@ void buildDirectionalLevel(SparseVoxelScene& voxels, int level) {
                                     const openvdb::Vec3s L = radAcc->getValue(p);
                                     v = glm::vec4(L[0], L[1], L[2], v.w);
                                 }
+                                if (depth && from) v = gpu::vox_alphaFromDepth(v);
                                 acc += (1.f - acc.w) * v;
                             }
                             sum += acc;
                         }
                     const float lines = float((hi[b] - lo[b] + 1) * (hi[c] - lo[c] + 1));
-                    it.setValue(sum.w / lines);
+                    glm::vec4 mean = sum / lines;
+                    if (depth) mean = gpu::vox_depthFromAlpha(mean);
+                    it.setValue(mean.w);
                     if (radianceLeaves)
-                        radianceLeaves->leaf(li).setValueOnly(
-                            it.pos(), openvdb::Vec3s(sum.x / lines, sum.y / lines, sum.z / lines));
+                        radianceLeaves->leaf(li).setValueOnly(it.pos(), openvdb::Vec3s(mean.x, mean.y, mean.z));
                 }
             }
         });
@@ -212,7 +217,7 @@ size_t product(const glm::ivec3& v) { return size_t(v.x) * size_t(v.y) * size_t(
 
 }  // namespace
 
-void buildSparseLevels(SparseVoxelScene& voxels, bool anisotropic) {
+void buildSparseLevels(SparseVoxelScene& voxels, bool anisotropic, bool depthLevels) {
     if (!voxels.opacity) throw InternalError("buildSparseLevels", "the scene is not voxelized");
     if (anisotropic && voxels.levels < 2)
         throw InternalError("buildSparseLevels", "voxel grid too small for directional levels");
@@ -224,8 +229,9 @@ void buildSparseLevels(SparseVoxelScene& voxels, bool anisotropic) {
     for (auto& levels : voxels.directional) levels.clear();
     for (int level = 1; level < voxels.levels; ++level) {
         buildLevel(voxels, level);
-        if (anisotropic) buildDirectionalLevel(voxels, level);
+        if (anisotropic) buildDirectionalLevel(voxels, level, depthLevels);
     }
+    voxels.depthLevels = anisotropic && depthLevels;
     voxels.stats.levelsSeconds = secondsSince(t0);
     updateSparseMemoryStats(voxels);
 }
@@ -284,7 +290,7 @@ SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject
                            options.anisotropic);
         voxels.stats.bounceSeconds = secondsSince(t0);
     }
-    buildSparseLevels(voxels, options.anisotropic);
+    buildSparseLevels(voxels, options.anisotropic, options.depthLevels);
     // Collapse constant blocks into tiles (tolerance 0: values are kept exactly).
     for (auto& g : voxels.opacityLevels) openvdb::tools::prune(g->tree());
     for (auto& g : voxels.radianceLevels) openvdb::tools::prune(g->tree());

@@ -80,6 +80,9 @@ struct SparseVoxelScene {
         openvdb::Vec3SGrid::Ptr radiance;  // null unless injected
     };
     std::array<std::vector<DirectionalLevel>, 6> directional;
+    // The directional levels hold optical depth (opacity tau, radiance * tau):
+    // shaders/voxelize/opacity_depth.h, vct.opacity=depth.
+    bool depthLevels = false;
 
     SparseVoxelStats stats;
 
@@ -107,6 +110,7 @@ SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject
 struct SparseBuildOptions {
     Bounds3 region;            // empty: the scene's bounds
     bool anisotropic = false;  // also build the directional levels (the GPU path's vct.aniso)
+    bool depthLevels = false;  // hold them as optical depth (vct.opacity=depth)
 };
 SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject, float sky,
                                    const ParamMap& params, const SparseBuildOptions& options);
@@ -118,7 +122,7 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, int voxelRes);
 // only injection reads (voxelizeGrid's `lit`).
 SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int voxelRes, bool lit = true);
 void injectSparseRadiance(SparseVoxelScene& voxels, const Scene& scene, float shadowOffsetVoxels);
-void buildSparseLevels(SparseVoxelScene& voxels, bool anisotropic = false);
+void buildSparseLevels(SparseVoxelScene& voxels, bool anisotropic = false, bool depthLevels = false);
 // Recomputes stats.memoryBytes / denseBytes / activeVoxels from the grids held.
 void updateSparseMemoryStats(SparseVoxelScene& voxels);
 

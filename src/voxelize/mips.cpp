@@ -74,7 +74,7 @@ AnisoPrograms buildAnisoPrograms(const VoxelGrid& grid) {
             cachedProgram(anisotropicMipProgramKey(anisoFormat, anisoFormat))};
 }
 
-void buildAnisotropicMips(VoxelGrid& grid, const AnisoPrograms& programs) {
+void buildAnisotropicMips(VoxelGrid& grid, const AnisoPrograms& programs, bool depthLevels) {
     const int anisoLevels = grid.levels - 1;
     if (anisoLevels < 1) throw InternalError("buildAnisotropicMips", "voxel grid too small for anisotropic mips");
     const bool hasRadiance = bool(grid.radiance);
@@ -95,6 +95,8 @@ void buildAnisotropicMips(VoxelGrid& grid, const AnisoPrograms& programs) {
             const GlTexture& out = grid.anisoRadiance[size_t(d)];
             setUniform(p, "uAxis", d / 2);
             setUniform(p, "uSign", d % 2 == 0 ? 1 : -1);
+            setUniform(p, "uDepthIn", depthLevels && level > 0 ? 1 : 0);
+            setUniform(p, "uDepthOut", depthLevels ? 1 : 0);
             if (level == 0) bindImage3D(0, baseTexture, 0, GL_READ_ONLY, baseFormat);
             else bindImage3D(0, out.id(), level - 1, GL_READ_ONLY, anisoFormat);
             bindImage3D(1, out.id(), level, GL_WRITE_ONLY, anisoFormat);
@@ -102,22 +104,24 @@ void buildAnisotropicMips(VoxelGrid& grid, const AnisoPrograms& programs) {
         }
     }
     grid.anisotropic = true;
+    grid.depthLevels = depthLevels;
     glUseProgram(0);
 }
 
 }  // namespace
 
-void buildMips(VoxelGrid& grid, bool anisotropic, PassTimer& timer, const std::string& scopeName) {
+void buildMips(VoxelGrid& grid, bool anisotropic, PassTimer& timer, const std::string& scopeName, bool depthLevels) {
     if (!grid.opacity) throw InternalError("buildMips", "the grid has no opacity (voxelize first)");
     const GLuint iso = isotropicMipProgram(grid);
     AnisoPrograms aniso;
     if (anisotropic) aniso = buildAnisoPrograms(grid);
     auto scope = timer.scope(scopeName, true, Reruns::WhenSceneChanges);
     buildIsotropicMips(grid, iso);
-    if (anisotropic) buildAnisotropicMips(grid, aniso);
+    if (anisotropic) buildAnisotropicMips(grid, aniso, depthLevels);
     else {
         for (GlTexture& t : grid.anisoRadiance) t.reset();
         grid.anisotropic = false;
+        grid.depthLevels = false;
     }
     for (GLuint u = 0; u < 6; ++u) glBindImageTexture(u, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
     grid.memoryBytes = voxelGridMemoryBytes(grid);

@@ -48,6 +48,9 @@ struct VoxelGrid {
     GlTexture radiance;  // GL_RGBA16F, 3D, mipmapped, premultiplied; empty until injection
     bool anisotropic = false;
     std::array<GlTexture, 6> anisoRadiance;  // see above; empty unless anisotropic
+    // The directional textures hold optical depth (radiance * tau, tau), not (premultiplied
+    // radiance, alpha): shaders/voxelize/opacity_depth.h, vct.opacity=depth.
+    bool depthLevels = false;
 
     size_t memoryBytes = 0;  // GPU memory of all textures above
     size_t occupiedVoxels = 0;  // voxels with opacity > 0 at level 0 (filled by voxelize)

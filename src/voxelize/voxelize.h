@@ -52,8 +52,11 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
 
 // Isotropic mips of opacity and (if injected) radiance: the mean of the 2x2x2 children (3
 // along an axis whose size is odd, at its last voxel, so no geometry is dropped). With
-// `anisotropic`, also the six directional textures of the contract. Timer scope "mips".
-void buildMips(VoxelGrid& grid, bool anisotropic, PassTimer& timer, const std::string& scopeName = "mips");
+// `anisotropic`, also the six directional textures of the contract; `depthLevels` stores them
+// as optical depth (shaders/voxelize/opacity_depth.h; grid.depthLevels says so). Timer scope
+// "mips".
+void buildMips(VoxelGrid& grid, bool anisotropic, PassTimer& timer, const std::string& scopeName = "mips",
+               bool depthLevels = false);
 
 // GPU bytes of every texture held by the grid (queried from GL).
 size_t voxelGridMemoryBytes(const VoxelGrid& grid);

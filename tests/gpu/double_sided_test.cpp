@@ -57,7 +57,7 @@ struct Lit {
 const glm::vec3 kBoxEye(1.7f, 1.f, 1.8f), kBoxTarget(0.5f, 0.8f, 0.f);
 
 Lit renderIndirect(const Scene& s, const std::string& gi, const std::string& backend, int voxelRes, int spp = 16,
-                   glm::vec3 eye = kBoxEye, glm::vec3 target = kBoxTarget) {
+                   glm::vec3 eye = kBoxEye, glm::vec3 target = kBoxTarget, const ParamMap& extra = ParamMap()) {
     RenderSession session(s);
     RenderRequest r;
     r.width = r.height = 48;
@@ -75,6 +75,7 @@ Lit renderIndirect(const Scene& s, const std::string& gi, const std::string& bac
     // Matched reflections: VCT's default (the voxels' direct light, one voxel bounce, the gather
     // at the pixel) against paths of at most three.
     r.params.set("reference.bounces", "3");
+    for (const auto& [k, v] : extra.values()) r.params.set(k, v);
     r.aovs = {"indirect", "position", "depth"};
     RenderResult out = session.render(r);
     GlContext::shared().checkErrors(("double-sided box, " + gi + " " + backend).c_str());
@@ -165,3 +166,20 @@ TEST(DoubleSided, APanelLitFromBehindLightsTheSideTheLightIsOn) {
     EXPECT_NEAR(behindDoubleSided, facing, 0.02 * facing);
     EXPECT_LT(behindOneSided, 0.5 * facing);
 }
+
+// The same closed box (wound inwards, single-sided) with optical-depth levels
+// (vct.opacity=depth): cones that cross a wall at a coarse level no longer pass part of their
+// transmittance to the black sky outside.
+TEST(DoubleSided, OpticalDepthLevelsKeepAClosedBoxsLightInside) {
+    ParamMap depth;
+    depth.set("vct.opacity", "depth");
+    const Lit alpha = renderIndirect(litBox(Winding::Inward, false), "vct", "gl", 64);
+    const Lit dense = renderIndirect(litBox(Winding::Inward, false), "vct", "gl", 64, 16, kBoxEye, kBoxTarget, depth);
+    const Lit sparse = renderIndirect(litBox(Winding::Inward, false), "vct", "vdb", 64, 16, kBoxEye, kBoxTarget, depth);
+    const Lit traced = renderIndirect(litBox(Winding::Inward, false), "reference", "gl", 64, 64);
+    std::printf("[optical depth] mean indirect: alpha %.4f, depth %.4f, depth sparse %.4f (rmse %.5f), path tracer %.4f\n",
+                alpha.mean, dense.mean, sparse.mean, rmse(sparse.indirect, dense.indirect), traced.mean);
+    EXPECT_LT(rmse(sparse.indirect, dense.indirect), 0.01) << "the backends disagree on depth levels";
+    EXPECT_GT(dense.mean, alpha.mean);
+}
+
