@@ -16,7 +16,9 @@ layout(binding = 2) uniform sampler2D gbufGeomNormal;
 layout(binding = 3) uniform sampler2D gbufAlbedo;
 
 // The march settings of the uniform block.
-ConeMarch cone_uniformMarch() { return ConeMarch(u.march.x, u.march.y, u.march.w, u.limits.w); }
+ConeMarch cone_uniformMarch() {
+    return ConeMarch(u.march.x, u.march.y, u.march.w, u.limits.w, u.gridResolution.xyz);
+}
 
 // Reads the G-buffer texel; false for sky or unusable normals.
 bool cone_surface(ivec2 pix, out vec3 pWorld, out vec3 n, out vec3 ng) {

@@ -56,14 +56,35 @@ struct ConeMarch {
     float stepFactor;       // beta: each step is beta footprints long
     float maxAlpha;         // the cone closes at this opacity (cone_close)
     float planeRatio;       // plane limit: texels of at most h / ratio voxels at height h; 0 = off
+    vec3 levelBase;         // voxels per axis of level 0, for the plane limit's texel size (0: 2^lod)
 };
 
+// The longest edge, in level-0 voxels, of a texel of level `level` (the volume's GL mip sizes:
+// each axis halved rounding down, never below 1). On an axis that is not a multiple of
+// 2^level a texel spans size / floor(size / 2^level) voxels, more than 2^level: a grid 127
+// voxels tall has 3 texels of 42.3 at level 5, not 32, and the base level's voxels reach up
+// to 1.5 of those. A zero base means texels of exactly 2^level.
+CONE_FN float cone_texelExtent(vec3 base, float level) {
+    if (!(base.x > 0.0f)) return exp2(level);
+    vec3 size = max(floor(base * exp2(-level)), vec3(1.0f));
+    vec3 e = base / size;
+    return max(e.x, max(e.y, e.z));
+}
+
 // The footprint's level of detail at distance t: diameter 2 t tan(aperture / 2), at least one
-// voxel; with the plane limit, whole levels of at most h / ratio voxels at height h = h0 +
-// t rise above the tangent plane (a fractional level would blend in the next, coarser one).
+// voxel; with the plane limit, whole levels whose texels (cone_texelExtent) are at most h / ratio
+// voxels at height h = h0 + t rise above the tangent plane (a fractional level would blend in
+// the next, coarser one).
 CONE_FN float cone_footprintLod(ConeMarch m, float t, float h0, float rise) {
     float lod = log2(max(1.0f, 2.0f * t * m.tanHalfAperture));
-    if (m.planeRatio > 0.0f) lod = min(lod, floor(log2(max(1.0f, (h0 + t * rise) / m.planeRatio))));
+    if (m.planeRatio > 0.0f) {
+        float reach = max(1.0f, (h0 + t * rise) / m.planeRatio);
+        float cap = floor(log2(reach));
+        // The texels a level really has, which exceed 2^level on an axis that is not a
+        // power-of-two multiple (a fitted grid's short axis).
+        while (cap > 0.0f && cone_texelExtent(m.levelBase, cap) > reach) cap -= 1.0f;
+        lod = min(lod, cap);
+    }
     return lod;
 }
 

@@ -216,6 +216,7 @@ MarchParams marchParams(const SparseVoxelScene& v, const ConeSettings& s) {
     mp.march.stepFactor = s.stepFactor;
     mp.march.maxAlpha = s.maxAlpha;
     mp.march.planeRatio = s.planeLimit ? gpu::CONE_PLANE_LIMIT_RATIO : 0.f;
+    mp.march.levelBase = glm::vec3(v.resolution);
     mp.offset = s.offsetVoxels;
     mp.maxLod = float(int(v.opacityLevels.size()) - 1);
     mp.res = glm::vec3(v.resolution);

@@ -26,7 +26,7 @@ struct UniformMedium {
     float facing(glm::vec3, glm::vec3, float, glm::vec4) const { return 1.f; }
 };
 
-gpu::ConeMarch march(float maxAlpha) { return {0.1f, 0.5f, maxAlpha, 0.f}; }
+gpu::ConeMarch march(float maxAlpha) { return {0.1f, 0.5f, maxAlpha, 0.f, glm::vec3(0.f)}; }
 
 TEST(ConeMarch, UniformMediumCompositesToItsTransmittance) {
     UniformMedium medium{0.2f, {0.5f, 0.25f, 1.f}};
@@ -50,15 +50,34 @@ TEST(ConeMarch, SaturatedConeClosesToTheMediumsColour) {
 }
 
 TEST(ConeMarch, FootprintAndPlaneLimitLevels) {
-    const gpu::ConeMarch open{0.5f, 0.5f, 0.99f, 0.f};
+    const gpu::ConeMarch open{0.5f, 0.5f, 0.99f, 0.f, glm::vec3(0.f)};
     EXPECT_EQ(gpu::cone_footprintLod(open, 0.5f, 1.5f, 0.f), 0.f) << "at least one voxel";
     EXPECT_NEAR(gpu::cone_footprintLod(open, 8.f, 1.5f, 0.f), 3.f, 1e-6f) << "diameter 2 t tan = 8 voxels";
     // Plane limit: whole levels of at most h / 1.5 voxels, h = h0 + t rise.
-    const gpu::ConeMarch limited{0.5f, 0.5f, 0.99f, 1.5f};
+    const gpu::ConeMarch limited{0.5f, 0.5f, 0.99f, 1.5f, glm::vec3(0.f)};
     EXPECT_EQ(gpu::cone_footprintLod(limited, 8.f, 1.5f, 0.f), 0.f) << "a cone along the plane stays at level 0";
     EXPECT_EQ(gpu::cone_footprintLod(limited, 8.f, 1.5f, 0.5f), 1.f) << "h = 5.5: texels of 2 voxels";
     EXPECT_EQ(gpu::cone_footprintLod(limited, 8.f, 1.5f, 1.f), 2.f) << "h = 9.5: texels of 4 voxels";
     EXPECT_NEAR(gpu::cone_footprintLod(limited, 6.f, 20.f, 1.f), 2.5849625f, 1e-6f) << "the footprint, under the limit";
+}
+
+// GL halves each axis rounding down: a grid 127 voxels tall has texels of 127 / 3 = 42.3
+// voxels at level 5 and 127 / 7 = 18.1 at level 4, so a sample 60 voxels above the tangent
+// plane (reach 40) may use level 4 only: level 5's base texels reach up to 63.5 voxels,
+// where a cube's reach 48 would have allowed it.
+TEST(ConeMarch, ThePlaneLimitMeasuresTheTexelsALevelHas) {
+    EXPECT_NEAR(gpu::cone_texelExtent(glm::vec3(128.f, 127.f, 128.f), 5.f), 127.f / 3.f, 1e-4f);
+    EXPECT_NEAR(gpu::cone_texelExtent(glm::vec3(128.f, 127.f, 128.f), 4.f), 127.f / 7.f, 1e-4f);
+    EXPECT_EQ(gpu::cone_texelExtent(glm::vec3(128.f), 5.f), 32.f);
+    EXPECT_EQ(gpu::cone_texelExtent(glm::vec3(0.f), 3.f), 8.f) << "no base: texels of 2^level";
+    // One texel along an axis shorter than 2^level spans the axis, less than 2^level.
+    EXPECT_EQ(gpu::cone_texelExtent(glm::vec3(64.f, 11.f, 64.f), 4.f), 16.f);
+    EXPECT_NEAR(gpu::cone_texelExtent(glm::vec3(64.f, 11.f, 64.f), 3.f), 11.f, 1e-6f);
+    const gpu::ConeMarch cube{0.5f, 0.5f, 0.99f, 1.5f, glm::vec3(128.f)};
+    const gpu::ConeMarch tall{0.5f, 0.5f, 0.99f, 1.5f, glm::vec3(128.f, 127.f, 128.f)};
+    EXPECT_EQ(gpu::cone_footprintLod(cube, 200.f, 0.f, 0.3f), 5.f) << "h = 60, reach 40: 32-voxel texels";
+    EXPECT_EQ(gpu::cone_footprintLod(tall, 200.f, 0.f, 0.3f), 4.f) << "level 5's texels are 42.3 > 40";
+    EXPECT_EQ(gpu::cone_footprintLod(tall, 200.f, 0.f, 0.5f), 5.f) << "h = 100, reach 66.7";
 }
 
 TEST(ConeMarch, LeavingOnlyOutsideAndMovingAway) {
