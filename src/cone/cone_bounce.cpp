@@ -90,7 +90,7 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
     }
     for (int i = 0; i < bounces; ++i) {
         // The mips (and the directional textures, rebuilt anew) of the previous total.
-        buildMips(grid, cone.anisotropic, mipsTimer, "bounce_mips", cone.anisotropic && cone.opacity == ConeOpacity::Depth);
+        buildMips(grid, cone.anisotropic, mipsTimer, "bounce_mips", wantsDepthLevels(cone));
         ubo = bindConeUniforms(coneUniforms(true, grid, 2.f * diagonal, bounceSky ? sky : 0.f, cone));
         const bool aniso = bindGridTextures(true, grid, cone);
         glBindTextureUnit(gpu::CONE_UNIT_BOUNCE_DIRECT, direct.id());

@@ -106,6 +106,5 @@ ConeSettings readConeSettings(const ParamMap& params) {
 }
 
 std::string toString(ConeAoMapping m) { return m == ConeAoMapping::Falloff ? "falloff" : "linear"; }
-std::string toString(ConeOpacity o) { return o == ConeOpacity::Depth ? "depth" : "alpha"; }
 
 }  // namespace vct

@@ -58,7 +58,11 @@ ConeSettings readConeSettings(const ParamMap& params);  // coneSettings().read(p
 // ConeSettings::seed from a render's 64-bit seed (both halves folded in).
 inline uint32_t coneJitterSeed(uint64_t seed) { return uint32_t(seed) ^ uint32_t(seed >> 32); }
 
+// True when the directional levels are to hold optical depth: vct.opacity=depth, which only
+// the directional levels carry (vct.aniso=1). The one rule the mip builders of both backends,
+// the voxel caches' keys and --explain read.
+inline bool wantsDepthLevels(const ConeSettings& s) { return s.anisotropic && s.opacity == ConeOpacity::Depth; }
+
 std::string toString(ConeAoMapping m);
-std::string toString(ConeOpacity o);
 
 }  // namespace vct

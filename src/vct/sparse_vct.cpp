@@ -19,7 +19,7 @@ SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache, const 
     SparseBuildOptions options;
     options.region = region.bounds;
     options.anisotropic = cone.anisotropic;
-    options.depthLevels = cone.anisotropic && cone.opacity == ConeOpacity::Depth;
+    options.depthLevels = wantsDepthLevels(cone);
     // Lights that move rebuild the sparse grids whole (they are built and lit in one pass).
     const std::string key = voxelGridKey(r, inject, options.anisotropic) + (options.depthLevels ? ";depth" : "") +
                             ";region=" + boundsKey(region.bounds) +

@@ -52,9 +52,7 @@ void declareVoxelPasses(const PlanContext& ctx, PassDeclarations& d) {
     const ConeSettings cone = readConeSettings(r.params);
     d.add({kPassMips, mipReads, {kVoxelMips},
            std::string("filtered levels for wide cones") +
-               (cone.anisotropic && cone.opacity == ConeOpacity::Depth
-                    ? "; the directional levels hold optical depth (vct.opacity=depth)"
-                    : "")});
+               (wantsDepthLevels(cone) ? "; the directional levels hold optical depth (vct.opacity=depth)" : "")});
 }
 
 // The cones a cone pass marches, for --explain: the set, and its lanes when there are more

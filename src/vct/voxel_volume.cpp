@@ -78,7 +78,7 @@ void lightAndFilter(MethodContext& ctx, VoxelGrid& grid, const ConeSettings& con
         traceVoxelBounces(grid, ctx.request.sky, cone, ctx.request.params, ctx.timer);
         gl.checkErrors("bounce");
     }
-    buildMips(grid, aniso, ctx.timer, "mips", aniso && cone.opacity == ConeOpacity::Depth);
+    buildMips(grid, aniso, ctx.timer, "mips", aniso && wantsDepthLevels(cone));
     gl.checkErrors("mips");
     ctx.runCounts["mips"]++;
 }
@@ -106,7 +106,7 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
         throw UsageError("--param vct.opacity=depth: clipmaps keep isotropic levels only (vct.clipmap.levels=" +
                          std::to_string(levels) + "); use the dense grid or the sparse backend");
     std::string key = voxelGridKey(r, inject, aniso) + ";region=" + boundsKey(region.bounds);
-    if (aniso && cone.opacity == ConeOpacity::Depth) key += ";depth";
+    if (aniso && wantsDepthLevels(cone)) key += ";depth";
     // A clipmap is its layout: the cascades' origins snap to their voxels, so a camera moving
     // less than a snap step keeps the same cascades (the same voxels), a larger move builds new ones.
     const std::string lights = inject ? lightsKey(ctx.scene) : std::string();

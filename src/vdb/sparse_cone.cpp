@@ -317,7 +317,7 @@ void traceSparseBounces(SparseVoxelScene& voxels, float sky, const ConeSettings&
     // Minutes at 1024^3 on a few cores: a bar on a terminal, in leaf nodes of 8^3 voxels.
     ProgressBar progress("vdb bounces", uint64_t(bounces) * uint64_t(direct->tree().leafCount()), true);
     for (int bounce = 0; bounce < bounces; ++bounce) {
-        buildSparseLevels(voxels, anisotropic, anisotropic && settings.opacity == ConeOpacity::Depth);
+        buildSparseLevels(voxels, anisotropic, anisotropic && wantsDepthLevels(settings));
         const MarchParams mp = marchParams(voxels, settings);
         openvdb::Vec3SGrid::Ptr next = direct->deepCopy();
         openvdb::tree::LeafManager<openvdb::Vec3STree> leaves(next->tree());
