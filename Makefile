@@ -10,7 +10,7 @@ ASAN_BUILD ?= build-asan
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: deps build render test asan bench scenes results convergence clean
+.PHONY: deps build render test asan bench scenes results convergence pareto clean
 
 deps:
 	@bash scripts/install-deps.sh
@@ -53,6 +53,11 @@ scenes: build
 
 bench: build
 	@for b in $(BUILD)/bench_*; do echo "== $$b"; ./$$b; done
+
+# Regenerates docs/pareto.txt: error against frame_ms and time_ms of VCT's variants, the
+# reference at 1..128 spp and the denoised ray tracers (about 12 minutes on 2 cores).
+pareto: build
+	./$(BUILD)/bench_pareto | tee docs/pareto.txt
 
 # Regenerates docs/results.md and docs/results/*.svg from sweeps/study.json.
 results: build

@@ -10,21 +10,20 @@
 
 layout(local_size_x = CONE_LOCAL_SIZE, local_size_y = CONE_LOCAL_SIZE) in;
 layout(r32f, binding = CONE_IMAGE_OUTPUT) uniform writeonly image2D cone_aoOut;
-// Per pixel: (volume samples, texture fetches) of its cones; zero for sky.
-layout(std430, binding = CONE_BINDING_COUNTS) writeonly buffer ConeCounts { vec2 cone_counts[]; };
+layout(r32f, binding = CONE_IMAGE_TRACED) uniform readonly image2D cone_aoTraced;  // resolve stage
+// Per pixel: (volume samples, texture fetches) of its cones; zero for sky and resolved pixels.
+layout(std430, binding = CONE_BINDING_COUNTS) buffer ConeCounts { vec2 cone_counts[]; };
 
-void main() {
-    ivec2 pix = ivec2(gl_GlobalInvocationID.xy);
-    if (pix.x >= u.image.x || pix.y >= u.image.y) return;
-    vec3 p, n, ng;
-    float ao = 1.0;
-    vec2 counts = vec2(0.0);
-    if (cone_surface(pix, p, n, ng)) {
-        cone_jitterPixel(pix);
-        ConeGather g = cone_gather(p, n, ng, u.limits.x, u.limits.z, 0.0);
-        ao = clamp(1.0 - g.occlusion, 0.0, 1.0);
-        counts = vec2(g.samples, cone_fetches);
-    }
-    cone_counts[pix.y * u.image.x + pix.x] = counts;
-    imageStore(cone_aoOut, pix, vec4(ao, 0.0, 0.0, 0.0));
+vec4 cone_passTrace(ivec2 pix, vec3 p, vec3 n, vec3 ng, out vec2 counts) {
+    cone_jitterPixel(pix);
+    cone_fetches = 0.0;
+    ConeGather g = cone_gather(p, n, ng, u.limits.x, u.limits.z, 0.0);
+    counts = vec2(g.samples, cone_fetches);
+    return vec4(clamp(1.0 - g.occlusion, 0.0, 1.0), 0.0, 0.0, 0.0);
 }
+vec4 cone_passFinish(ivec2 pix, vec4 traced) { return traced; }
+vec4 cone_passSky() { return vec4(1.0, 0.0, 0.0, 0.0); }
+vec4 cone_passTraced(ivec2 cell) { return vec4(imageLoad(cone_aoTraced, cell).r, 0.0, 0.0, 0.0); }
+void cone_passStore(ivec2 at, vec4 v) { imageStore(cone_aoOut, at, vec4(v.r, 0.0, 0.0, 0.0)); }
+
+#include "cone/cone_resolve.glsl"

@@ -12,22 +12,25 @@
 
 layout(local_size_x = CONE_LOCAL_SIZE, local_size_y = CONE_LOCAL_SIZE) in;
 layout(rgba32f, binding = CONE_IMAGE_OUTPUT) uniform writeonly image2D cone_giOut;
-// Per pixel: (volume samples, texture fetches) of its cones; zero for sky.
-layout(std430, binding = CONE_BINDING_COUNTS) writeonly buffer ConeCounts { vec2 cone_counts[]; };
+layout(rgba32f, binding = CONE_IMAGE_TRACED) uniform readonly image2D cone_giTraced;  // resolve stage
+// Per pixel: (volume samples, texture fetches) of its cones; zero for sky and resolved pixels.
+layout(std430, binding = CONE_BINDING_COUNTS) buffer ConeCounts { vec2 cone_counts[]; };
 
-void main() {
-    ivec2 pix = ivec2(gl_GlobalInvocationID.xy);
-    if (pix.x >= u.image.x || pix.y >= u.image.y) return;
-    vec3 p, n, ng;
-    vec4 result = vec4(0.0);
-    vec2 counts = vec2(0.0);
-    if (cone_surface(pix, p, n, ng)) {
-        cone_jitterPixel(pix);
-        vec3 albedo = max(texelFetch(gbufAlbedo, pix, 0).rgb, vec3(0.0));
-        ConeGather g = cone_gather(p, n, ng, u.limits.x, 0.0, u.limits.y);
-        result = vec4(albedo * g.radiance, 1.0);
-        counts = vec2(g.samples, cone_fetches);
-    }
-    cone_counts[pix.y * u.image.x + pix.x] = counts;
-    imageStore(cone_giOut, pix, result);
+// The traced value is the light the cones gather (sum_c w_c L_c); the pixel's own albedo
+// multiplies it when it is finished, so a resolved pixel keeps its texture.
+vec4 cone_passTrace(ivec2 pix, vec3 p, vec3 n, vec3 ng, out vec2 counts) {
+    cone_jitterPixel(pix);
+    cone_fetches = 0.0;
+    ConeGather g = cone_gather(p, n, ng, u.limits.x, 0.0, u.limits.y);
+    counts = vec2(g.samples, cone_fetches);
+    return vec4(g.radiance, 1.0);
 }
+vec4 cone_passFinish(ivec2 pix, vec4 traced) {
+    vec3 albedo = max(texelFetch(gbufAlbedo, pix, 0).rgb, vec3(0.0));
+    return vec4(albedo * traced.rgb, 1.0);
+}
+vec4 cone_passSky() { return vec4(0.0); }
+vec4 cone_passTraced(ivec2 cell) { return imageLoad(cone_giTraced, cell); }
+void cone_passStore(ivec2 at, vec4 v) { imageStore(cone_giOut, at, v); }
+
+#include "cone/cone_resolve.glsl"

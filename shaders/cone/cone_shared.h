@@ -42,6 +42,31 @@ VCT_CONST int CONE_BINDING_COUNTS = 6;      // cone_ao/gi.glsl: per-pixel (sampl
 VCT_CONST int CONE_BINDING_VOXEL_LIST = 7;  // cone_bounce.glsl: SSBO of the voxels that gather
 VCT_CONST int CONE_BOUNCE_GROUP = 64;       // cone_bounce.glsl: invocations per group over the list
 
+// Reduced-resolution cone passes (vct.trace-scale = s > 1): the trace stage marches the cones
+// of one pixel per s x s block (cone_tracedPixel) into a traced image of ceil(size / s); the
+// resolve stage (cone_resolve.glsl) gives every surface pixel the traced values of its nearest
+// blocks weighted bilinearly and by how well each block's pixel shares its surface (normal and
+// tangent plane), and traces the pixel itself when none does. Engines ship VCT this way: the
+// cone pass costs about 1 / s^2 of a full-resolution one, and what it gathers varies over
+// distances of voxels and R, not pixels.
+VCT_CONST int CONE_STAGE_TRACE = 0;
+VCT_CONST int CONE_STAGE_RESOLVE = 1;
+VCT_CONST int CONE_IMAGE_TRACED = 1;  // image unit of the traced image in the resolve stage
+// 4: a block of 16 pixels. Coarser blocks stop resolving the G-buffer's detail (a 4-pixel
+// block of a 512^2 image is already a degree of a 60-degree view).
+VCT_CONST int CONE_MAX_TRACE_SCALE = 4;
+// Normal agreement weight max(0, n_q . n_b)^8: 0.5 at 25 degrees, so a crease's other face
+// (90 degrees) gets none while a curved surface's neighbours keep most of theirs.
+VCT_CONST float CONE_RESOLVE_NORMAL_POWER = 8.0;
+// Tangent-plane agreement: the distance of the pixel's point from the block pixel's tangent
+// plane, over their separation, weighted linearly to 0 at 0.25 (a slope of 14 degrees off the
+// plane). Scale-free, so it needs no voxel size or camera: points of one smooth surface lie in
+// each other's tangent planes, an edge's background does not.
+VCT_CONST float CONE_RESOLVE_PLANE_SLOPE = 0.25;
+// Below this total weight a pixel shares no block's surface (a thin object narrower than a
+// block, a silhouette) and traces its own cones.
+VCT_CONST float CONE_RESOLVE_MIN_WEIGHT = 0.05;
+
 // AO mappings (ConeSettings::aoMapping).
 VCT_CONST int CONE_AO_LINEAR = 0;    // A = 1 - sum_c w_c alpha_c: estimates the reference's A_R
 VCT_CONST int CONE_AO_FALLOFF = 1;   // each sample's occlusion weighted by 1 / (1 + lambda t)
@@ -88,6 +113,7 @@ struct ConeUniforms {
                            // w = 1: the directional levels hold optical depth (opacity_depth.h)
     ivec4 config;          // x = cone count, y = AO mapping, z = mip level (rayMarch), w = channel (rayMarch)
     ivec4 image;           // x = width, y = height, z = cone jitter (1: rotate per pixel), w = its seed
+    ivec4 trace;           // pixel passes: x = trace scale (vct.trace-scale), y = stage (CONE_STAGE_*)
     vec4 cones[CONE_MAX_CONES];  // xyz = direction in the tangent frame (z = normal), w = weight
 };
 

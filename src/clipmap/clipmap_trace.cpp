@@ -57,7 +57,7 @@ GlTexture traceClipmap(bool gi, const Clipmap& cm, const GBuffer& gbuffer, float
         const VoxelGrid& g = cm.levels[size_t(l)];
         glBindTextureUnit(GLuint(gpu::CLIPMAP_UNIT_LEVEL0 + l), gi ? g.radiance.id() : g.opacity.id());
     }
-    GlTexture out = dispatchPixelPass(program, gi, gbuffer, counts);
+    GlTexture out = dispatchPixelPass(program, gi, gbuffer, counts, ubo.id(), settings.traceScale);
     for (int l = 0; l < layout.levelCount; ++l) glBindTextureUnit(GLuint(gpu::CLIPMAP_UNIT_LEVEL0 + l), 0);
     return out;
 }

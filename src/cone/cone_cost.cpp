@@ -13,6 +13,8 @@ nlohmann::json coneCostJson(const ConeCost& c, const ConeSettings& s, int voxelR
             {"samples", c.samples},
             {"fetches", c.fetches},
             {"surface_pixels", c.surfacePixels},
+            {"traced_pixels", c.tracedPixels},
+            {"trace_scale", s.traceScale},
             {"cones_marched", s.coneCount * resolveConeLanes(s.lanes, s.coneCount, voxelRes)}};
 }
 

@@ -15,14 +15,17 @@ struct ConeCost {
     double samples = 0.0;
     double fetches = 0.0;
     int pixels = 0;         // the image's
-    int surfacePixels = 0;  // those that traced cones (not sky)
+    int surfacePixels = 0;  // those with a surface (not sky): the per-pixel figures' divisor
+    int tracedPixels = 0;   // those whose own cones were marched (fewer with vct.trace-scale > 1)
 
-    // One pixel's counts (zero samples: sky, no cones traced).
-    void addPixel(double pixelSamples, double pixelFetches) {
+    // One pixel's counts: `surface` when the G-buffer has a surface there, whether or not the
+    // pixel's own cones were traced (zero samples: sky, or resolved from traced neighbours).
+    void addPixel(double pixelSamples, double pixelFetches, bool surface) {
         ++pixels;
         samples += pixelSamples;
         fetches += pixelFetches;
-        if (pixelSamples > 0.0) ++surfacePixels;
+        if (surface) ++surfacePixels;
+        if (pixelSamples > 0.0) ++tracedPixels;
     }
 };
 

@@ -2,8 +2,11 @@
 
 #include "cone/cone_set.h"
 #include "core/errors.h"
+#include "gl/readback.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <map>
 #include <stdexcept>
 #include <vector>
@@ -16,7 +19,7 @@ void setGridUniforms(gpu::ConeUniforms& u, const VoxelGrid& grid) {
 }
 
 GlBuffer bindConeUniforms(const gpu::ConeUniforms& u) {
-    GlBuffer ubo = createBuffer(sizeof(u), &u, 0);
+    GlBuffer ubo = createBuffer(sizeof(u), &u);  // dynamic: a reduced-resolution pass sets its stage
     glBindBufferBase(GL_UNIFORM_BUFFER, gpu::CONE_UBO_BINDING, ubo.id());
     return ubo;
 }
@@ -49,6 +52,7 @@ gpu::ConeUniforms coneUniforms(bool gi, const VoxelGrid& grid, float maxDistWorl
     u.config = glm::ivec4(int(cones.size()), gi ? gpu::CONE_AO_LINEAR : int(settings.aoMapping), 0, 0);
     for (size_t i = 0; i < cones.size(); ++i) u.cones[i] = cones[i];
     u.camera.w = grid.depthLevels && useAniso(grid, settings) ? 1.f : 0.f;
+    u.trace = glm::ivec4(settings.traceScale, gpu::CONE_STAGE_TRACE, 0, 0);
     return u;
 }
 
@@ -76,18 +80,42 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
     return bound;
 }
 
-GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlBuffer& counts) {
+GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlBuffer& counts, GLuint ubo,
+                            int traceScale) {
     const GLenum format = gi ? GL_RGBA32F : GL_R32F;
+    const int s = std::max(1, traceScale);
     GlTexture out = createTexture2D(format, gbuffer.width, gbuffer.height);
-    glBindImageTexture(gpu::CONE_IMAGE_OUTPUT, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
     const size_t pixels = size_t(gbuffer.width) * size_t(gbuffer.height);
+    // Zeroed: with a trace scale only the traced pixels (and those that trace their own) write.
     counts = createBuffer(pixels * 2 * sizeof(float));
+    glClearNamedBufferData(counts.id(), GL_R32F, GL_RED, GL_FLOAT, nullptr);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_COUNTS, counts.id());
     glUseProgram(program);
-    glDispatchCompute(groupCount(gbuffer.width, gpu::CONE_LOCAL_SIZE),
-                      groupCount(gbuffer.height, gpu::CONE_LOCAL_SIZE), 1);
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                    GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    const GLbitfield written = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                               GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
+                               GL_SHADER_STORAGE_BARRIER_BIT;
+    if (s == 1) {
+        glBindImageTexture(gpu::CONE_IMAGE_OUTPUT, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+        glDispatchCompute(groupCount(gbuffer.width, gpu::CONE_LOCAL_SIZE),
+                          groupCount(gbuffer.height, gpu::CONE_LOCAL_SIZE), 1);
+        glMemoryBarrier(written);
+    } else {
+        // The trace stage: one pixel per s x s block into the traced image.
+        const int tw = (gbuffer.width + s - 1) / s, th = (gbuffer.height + s - 1) / s;
+        GlTexture traced = createTexture2D(format, tw, th);
+        glBindImageTexture(gpu::CONE_IMAGE_OUTPUT, traced.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+        glDispatchCompute(groupCount(tw, gpu::CONE_LOCAL_SIZE), groupCount(th, gpu::CONE_LOCAL_SIZE), 1);
+        glMemoryBarrier(written);
+        // The resolve stage over every pixel (cone_resolve.glsl).
+        const GLint stage = gpu::CONE_STAGE_RESOLVE;
+        glNamedBufferSubData(ubo, GLintptr(offsetof(gpu::ConeUniforms, trace) + sizeof(GLint)), sizeof(stage), &stage);
+        glBindImageTexture(gpu::CONE_IMAGE_TRACED, traced.id(), 0, GL_FALSE, 0, GL_READ_ONLY, format);
+        glBindImageTexture(gpu::CONE_IMAGE_OUTPUT, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+        glDispatchCompute(groupCount(gbuffer.width, gpu::CONE_LOCAL_SIZE),
+                          groupCount(gbuffer.height, gpu::CONE_LOCAL_SIZE), 1);
+        glMemoryBarrier(written);
+        glBindImageTexture(gpu::CONE_IMAGE_TRACED, 0, 0, GL_FALSE, 0, GL_READ_ONLY, format);
+    }
     glUseProgram(0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_COUNTS, 0);
     return out;
@@ -102,10 +130,14 @@ GlTexture timedConePass(PassTimer& timer, const char* name, const GBuffer& gbuff
         out = trace(counts);
     }
     if (cost) {
-        std::vector<float> c(size_t(gbuffer.width) * size_t(gbuffer.height) * 2);
+        const size_t pixels = size_t(gbuffer.width) * size_t(gbuffer.height);
+        std::vector<float> c(pixels * 2);
         glGetNamedBufferSubData(counts.id(), 0, GLsizeiptr(c.size() * sizeof(float)), c.data());
+        // Surface pixels as the passes see them (position w > 0): the per-pixel figures' divisor,
+        // whether a pixel traced its own cones or was resolved from its neighbours'.
+        const Image position = readTexture2D(gbuffer.position.id(), gbuffer.width, gbuffer.height, 4);
         *cost = ConeCost{};
-        for (size_t i = 0; i + 1 < c.size(); i += 2) cost->addPixel(c[i], c[i + 1]);
+        for (size_t i = 0; i < pixels; ++i) cost->addPixel(c[2 * i], c[2 * i + 1], position.pixels[4 * i + 3] > 0.f);
     }
     return out;
 }

@@ -49,8 +49,11 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
 
 // Runs a bound pixel pass: `program` over the G-buffer's pixels in CONE_LOCAL_SIZE tiles,
 // writing a new GL_RGBA32F (GI) or GL_R32F (AO) texture of the G-buffer's size, and into a
-// new `counts` buffer each pixel's (samples, fetches).
-GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlBuffer& counts);
+// new `counts` buffer each pixel's (samples, fetches). With `traceScale` s > 1 it runs the
+// pass's two stages (CONE_STAGE_TRACE into an image of ceil(size / s), then CONE_STAGE_RESOLVE
+// over every pixel), setting the stage in `ubo`, the pass's bound ConeUniforms.
+GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlBuffer& counts, GLuint ubo,
+                            int traceScale);
 
 // Runs `trace` (a cone pass that dispatches with dispatchPixelPass) in timer scope `name`;
 // then, outside the timed span, sums its counts into `cost` when given: the readback is for

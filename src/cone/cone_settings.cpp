@@ -33,6 +33,9 @@ void ConeSettings::validate() const {
             "offsetVoxels " + std::to_string(offsetVoxels) + " outside [0, 8]");
     require(std::isfinite(maxAlpha) && maxAlpha >= 0.5f && maxAlpha <= 1.f,
             "maxAlpha " + std::to_string(maxAlpha) + " outside [0.5, 1]");
+    require(traceScale >= 1 && traceScale <= gpu::CONE_MAX_TRACE_SCALE,
+            "traceScale " + std::to_string(traceScale) + " outside [1, " + std::to_string(gpu::CONE_MAX_TRACE_SCALE) +
+                "]");
     require(lanes >= 0 && lanes * coneCount <= gpu::CONE_MAX_CONES,
             "lanes " + std::to_string(lanes) + " x " + std::to_string(coneCount) + " cones outside [0, " +
                 std::to_string(gpu::CONE_MAX_CONES) + "]");
@@ -85,6 +88,10 @@ const SettingsTable<ConeSettings>& coneSettings() {
                     "depth: a march through a one-voxel wall passes the wall's own transmittance, where alpha's "
                     "trilinear tent passes ~13% of the light at any resolution); needs vct.aniso=1, dense grid or "
                     "sparse backend")
+            .integer("vct.trace-scale", &ConeSettings::traceScale, 1, gpu::CONE_MAX_TRACE_SCALE,
+                     "trace the cones of one pixel per s x s block and resolve the others from the nearest blocks "
+                     "that share their surface (normal and tangent plane; a pixel sharing none traces its own): "
+                     "the cone pass costs about 1 / s^2 (dense grid and clipmap; not the sparse backend)")
             .check([](const ConeSettings& s) {
                 if (s.opacity == ConeOpacity::Depth && !s.anisotropic)
                     throw UsageError("--param vct.opacity=depth: optical depth is held by the directional levels; it "

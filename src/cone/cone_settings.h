@@ -3,7 +3,7 @@
 //
 // Keys, defaults, ranges and docs: coneSettings() (vct.cones, vct.aperture, vct.step,
 // vct.offset, vct.max-alpha, vct.aniso, vct.ao-mapping, vct.plane-limit, vct.lanes, vct.jitter,
-// vct.opacity).
+// vct.opacity, vct.trace-scale).
 //
 // AO mappings: `linear` A = 1 - sum_c w_c alpha_c, where alpha_c is cone c's opacity
 // accumulated within R; with cosine-lobe weights w_c this estimates A_R, the cosine-weighted
@@ -40,6 +40,7 @@ struct ConeSettings {
     int lanes = 1;                  // lanes per cone (cone/cone_set.h); 0 = auto, (res / 32)^2
     bool jitter = false;            // turn the set about the normal per pixel (cone_jitterAngle)
     ConeOpacity opacity = ConeOpacity::Alpha;  // vct.opacity: the directional levels' encoding
+    int traceScale = 1;             // vct.trace-scale: cones traced for one pixel per s x s block, resolved
     uint32_t seed = 0;              // the render's seed, for the jitter: set by the caller, not a --param
 
     // Throws InternalError naming the field if a value is outside its range.

@@ -65,6 +65,9 @@ std::string coneExplanation(const RenderRequest& r) {
         s += ", each marched as " + std::to_string(lanes) + " lanes" +
              (c.lanes == 0 ? " (vct.lanes=auto at " + std::to_string(r.voxelRes) + "^3)" : " (vct.lanes)");
     if (c.jitter) s += ", turned about the normal per pixel (vct.jitter, from the seed)";
+    if (c.traceScale > 1)
+        s += ", traced for one pixel per " + std::to_string(c.traceScale) + "x" + std::to_string(c.traceScale) +
+             " block and resolved for the others (vct.trace-scale)";
     return s;
 }
 
@@ -116,6 +119,9 @@ void executeVct(MethodContext& ctx, MethodKind kind) {
         if (cone.jitter)
             throw UsageError("--param vct.jitter=1: the sparse backend (--backend vdb) traces one fixed cone set; "
                              "use --backend gl");
+        if (cone.traceScale != 1)
+            throw UsageError("--param vct.trace-scale=" + std::to_string(cone.traceScale) +
+                             ": the sparse backend (--backend vdb) traces every pixel; use --backend gl");
         traceSparse(ctx, kind, sparseFrameFor(ctx, session.sparse, cone), cone);
         return;
     }

@@ -238,7 +238,7 @@ void checkVoxels(const SparseVoxelScene& v, const char* what) {
 void sumCost(ConeCost* cost, const std::vector<double>& samples, const std::vector<double>& fetches) {
     if (!cost) return;
     *cost = ConeCost{};
-    for (size_t i = 0; i < samples.size(); ++i) cost->addPixel(samples[i], fetches[i]);
+    for (size_t i = 0; i < samples.size(); ++i) cost->addPixel(samples[i], fetches[i], samples[i] > 0.0);
 }
 
 std::vector<float> sparseConeAO(const SparseVoxelScene& voxels, const std::vector<SparsePoint>& points,

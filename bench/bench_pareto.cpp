@@ -1,0 +1,230 @@
+// Error against cost for VCT's variants, the ray-traced reference at 1..128 spp and the
+// denoised ray tracers, measured in one run on one machine: AO at 512^2 and GI at 256^2 on
+// the Cornell box, Sponza (when present) and an off-screen scene. Prints, per case, every
+// point with frame_ms (what the next frame of the static scene costs: core/timing.h) and
+// time_ms (cold: voxels and the BVH built anew), the Pareto fronts of both, and for each VCT
+// variant the reference's cost at the same error, interpolated on its own error-cost curve
+// (error ~ 1 / sqrt(spp) between measured points): the equal-error ratio of frame_ms and of
+// time_ms.
+//
+//   bench_pareto [--ao-size N] [--gi-size N] [--truth-spp N] [--max-spp N] [--runs N]
+//                [--voxel-res N] [--case NAME]...   (cornell-ao, cornell-gi, sponza-ao,
+//                sponza-gi, overhang-ao, emitter-gi; default all)
+//
+// The truth is the reference at --truth-spp (256) with another seed than the points', so a
+// point's error is its own noise and bias, not shared samples. Sponza: the view of
+// docs/results.md's study (eye (-11, 1.8, 0.5), target (4, 3.5, -0.5), 60 deg), R = 1, lit by
+// a uniform sky of 0.5 alone for GI (it has no lights); the Cornell box and the off-screen
+// scenes: their own cameras, R = 0.5, sky 0 for GI.
+#include "eval/comparison.h"
+#include "eval/metrics.h"
+#include "gl/context.h"
+#include "render/renderer.h"
+#include "scene/camera.h"
+#include "scene/gltf_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <thread>
+#include <vector>
+
+using namespace vct;
+
+namespace {
+
+struct Case {
+    std::string name, path;
+    bool gi = false;
+    float radius = 0.5f, sky = 0.f;
+    bool customCamera = false;
+};
+
+struct Point {
+    std::string label;
+    bool reference = false;  // a point of the reference's curve
+    int spp = 0;
+    double rmse = 0.0, frameMs = 0.0, timeMs = 0.0;
+    bool frontFrame = false, frontTime = false;
+};
+
+// Marks the points no other point beats in both error and the cost `cost`.
+template <class Cost, class Flag>
+void markFront(std::vector<Point>& points, Cost cost, Flag flag) {
+    for (Point& p : points) {
+        p.*flag = true;
+        for (const Point& q : points)
+            if (&q != &p && q.rmse <= p.rmse && cost(q) <= cost(p) && (q.rmse < p.rmse || cost(q) < cost(p))) {
+                p.*flag = false;
+                break;
+            }
+    }
+}
+
+// The reference's cost at error `e` on its curve (points sorted by spp): log-log interpolation
+// between the bracketing points; past the last point, cost ~ 1 / e^2 (error ~ 1 / sqrt(spp)).
+// `extrapolated` says which; below the first point's error only.
+double referenceCostAt(const std::vector<Point>& curve, double e, double Point::*cost, bool& extrapolated) {
+    extrapolated = false;
+    if (curve.empty()) return 0.0;
+    if (e >= curve.front().rmse) return curve.front().*cost;  // 1 spp is already at least as accurate
+    for (size_t i = 1; i < curve.size(); ++i) {
+        const Point &a = curve[i - 1], &b = curve[i];
+        if (e >= b.rmse) {
+            const double t = std::log(a.rmse / e) / std::log(a.rmse / b.rmse);
+            return std::exp(std::log(a.*cost) + t * std::log((b.*cost) / (a.*cost)));
+        }
+    }
+    extrapolated = true;
+    const Point& last = curve.back();
+    return last.*cost * (last.rmse / e) * (last.rmse / e);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    int aoSize = 512, giSize = 256, truthSpp = 256, maxSpp = 128, runs = 3, voxelRes = 128;
+    std::vector<std::string> only;
+    for (int i = 1; i + 1 < argc; i += 2) {
+        const std::string a = argv[i];
+        if (a == "--ao-size") aoSize = std::atoi(argv[i + 1]);
+        else if (a == "--gi-size") giSize = std::atoi(argv[i + 1]);
+        else if (a == "--truth-spp") truthSpp = std::atoi(argv[i + 1]);
+        else if (a == "--max-spp") maxSpp = std::atoi(argv[i + 1]);
+        else if (a == "--runs") runs = std::atoi(argv[i + 1]);
+        else if (a == "--voxel-res") voxelRes = std::atoi(argv[i + 1]);
+        else if (a == "--case") only.push_back(argv[i + 1]);
+        else {
+            std::cerr << "bench_pareto: unknown option " << a << "\n";
+            return 2;
+        }
+    }
+    if (aoSize < 8 || giSize < 8 || truthSpp < 1 || maxSpp < 1 || runs < 1 || voxelRes < 8) {
+        std::cerr << "bench_pareto: sizes >= 8, spp and runs >= 1\n";
+        return 2;
+    }
+    const std::string src = VCT_SOURCE_DIR;
+    const char* env = std::getenv("VCT_SHARED_SCENES");
+    const std::string shared = env ? env : src + "/../shared/scenes";
+    std::vector<Case> cases = {{"cornell-ao", src + "/scenes/cornell_box.gltf", false, 0.5f, 0.f},
+                               {"cornell-gi", src + "/scenes/cornell_box.gltf", true, 0.5f, 0.f},
+                               {"sponza-ao", shared + "/mcguire_sponza.glb", false, 1.f, 0.f, true},
+                               {"sponza-gi", shared + "/mcguire_sponza.glb", true, 1.f, 0.5f, true},
+                               {"overhang-ao", src + "/scenes/offscreen_overhang.gltf", false, 0.5f, 0.f},
+                               {"emitter-gi", src + "/scenes/offscreen_gi_emitter.gltf", true, 0.5f, 0.f}};
+    std::printf("renderer: %s, %u cores; AO %dx%d, GI %dx%d, %d^3 voxels, truth %d spp, median of %d cold runs after "
+                "a warm-up\n",
+                GlContext::shared().info().renderer.c_str(), std::thread::hardware_concurrency(), aoSize, aoSize,
+                giSize, giSize, voxelRes, truthSpp, runs);
+    for (const Case& c : cases) {
+        if (!only.empty() && std::find(only.begin(), only.end(), c.name) == only.end()) continue;
+        if (!std::filesystem::exists(c.path)) {
+            std::printf("\n%s: %s not found, skipped\n", c.name.c_str(), c.path.c_str());
+            continue;
+        }
+        const Scene scene = loadScene(c.path);
+        RenderSession session(scene);
+        RenderRequest base;
+        base.width = base.height = c.gi ? giSize : aoSize;
+        CameraRequest cam;
+        if (c.customCamera) {
+            cam.hasEye = true;
+            cam.eye = glm::vec3(-11.f, 1.8f, 0.5f);
+            cam.target = glm::vec3(4.f, 3.5f, -0.5f);
+            cam.fovDeg = 60.f;
+        }
+        base.camera = resolveCamera(scene, cam, float(base.width) / float(base.height));
+        base.radius = c.radius;
+        base.sky = c.sky;
+        base.voxelRes = voxelRes;
+        base.params.set("reference.bounces", "3");  // GI: VCT's reflections, as the comparisons match them
+        const std::string aov = c.gi ? "indirect" : "ao";
+        auto request = [&](const std::string& method, int spp, uint64_t seed) {
+            RenderRequest r = base;
+            (c.gi ? r.gi : r.ao) = method;
+            r.spp = spp;
+            r.seed = seed;
+            r.aovs = {aov, "depth"};
+            return r;
+        };
+        // The truth: another seed than every point's (they use 0).
+        const RenderResult truthRun = session.render(request("reference", truthSpp, 7919));
+        const Image& truth = truthRun.aovs.at(aov);
+        const Image valid = validMaskFromDepth(truthRun.aovs.at("depth"));
+
+        std::vector<std::pair<std::string, RenderRequest>> variants;
+        std::vector<int> spps;
+        for (int spp = 1; spp <= maxSpp; spp *= 2) spps.push_back(spp);
+        for (int spp : spps) variants.push_back({"reference " + std::to_string(spp) + " spp", request("reference", spp, 0)});
+        const std::string denoised = c.gi ? "pt-denoised" : "rtao-denoised";
+        for (int spp : {1, 4}) {
+            RenderRequest r = request(denoised, 1, 0);
+            r.params.set(denoised + ".spp", std::to_string(spp));
+            variants.push_back({denoised + " " + std::to_string(spp) + " spp", r});
+        }
+        for (const auto& [label, params] : std::vector<std::pair<std::string, std::vector<std::pair<std::string, std::string>>>>{
+                 {"vct", {}},
+                 {"vct trace-scale=2", {{"vct.trace-scale", "2"}}},
+                 {"vct trace-scale=4", {{"vct.trace-scale", "4"}}},
+                 {"vct cones=16", {{"vct.cones", "16"}}},
+                 {"vct cones=16 trace-scale=2", {{"vct.cones", "16"}, {"vct.trace-scale", "2"}}},
+                 {"vct cones=16 trace-scale=4", {{"vct.cones", "16"}, {"vct.trace-scale", "4"}}}}) {
+            RenderRequest r = request("vct", 1, 0);
+            for (const auto& [k, v] : params) r.params.set(k, v);
+            variants.push_back({label, r});
+        }
+
+        std::vector<Point> points;
+        for (auto& [label, req] : variants) {
+            std::fprintf(stderr, "%s: %s\n", c.name.c_str(), label.c_str());
+            const RenderResult first = session.render(req);  // warm-up; its image is the one scored
+            std::vector<double> totals, frames;
+            for (int run = 0; run < runs; ++run) {
+                RenderRequest timed = req;
+                timed.reuseSceneData = false;  // its own voxels or BVH count in its cold time
+                const RenderResult r = session.render(timed);
+                totals.push_back(r.totalMs);
+                frames.push_back(r.frameMs);
+            }
+            Point p;
+            p.label = label;
+            p.reference = req.ao == "reference" || req.gi == "reference";
+            p.spp = req.spp;
+            p.rmse = computeErrorMetrics(first.aovs.at(aov), truth, &valid).rmse;
+            p.frameMs = medianOf(frames);
+            p.timeMs = medianOf(totals);
+            points.push_back(p);
+        }
+        markFront(points, [](const Point& p) { return p.frameMs; }, &Point::frontFrame);
+        markFront(points, [](const Point& p) { return p.timeMs; }, &Point::frontTime);
+
+        std::printf("\n%s: %s, %dx%d, R = %.2f, sky %.2f (%s against the reference at %d spp)\n", c.name.c_str(),
+                    c.path.c_str(), base.width, base.height, c.radius, c.sky, c.gi ? "indirect radiance" : "AO",
+                    truthSpp);
+        std::printf("%-30s %9s %11s %11s  %s\n", "point", "rmse", "frame_ms", "time_ms", "Pareto (frame, cold)");
+        for (const Point& p : points)
+            std::printf("%-30s %9.4f %11.1f %11.1f  %s %s\n", p.label.c_str(), p.rmse, p.frameMs, p.timeMs,
+                        p.frontFrame ? "frame" : "     ", p.frontTime ? "cold" : "");
+        std::vector<Point> curve;
+        for (const Point& p : points)
+            if (p.reference) curve.push_back(p);
+        std::printf("equal error: the reference's cost at each VCT point's error, over the VCT point's\n");
+        std::printf("%-30s %9s %13s %13s %9s %9s\n", "vct point", "rmse", "ref frame_ms", "ref time_ms", "frame x",
+                    "cold x");
+        for (const Point& p : points) {
+            if (p.label.rfind("vct", 0) != 0) continue;
+            bool extraFrame = false, extraTime = false;
+            const double refFrame = referenceCostAt(curve, p.rmse, &Point::frameMs, extraFrame);
+            const double refTime = referenceCostAt(curve, p.rmse, &Point::timeMs, extraTime);
+            std::printf("%-30s %9.4f %13.1f %13.1f %9.2f %9.2f%s%s\n", p.label.c_str(), p.rmse, refFrame, refTime,
+                        refFrame / p.frameMs, refTime / p.timeMs,
+                        p.rmse >= curve.front().rmse ? "  (the reference at 1 spp is as accurate)" : "",
+                        extraFrame ? "  (beyond the largest spp: extrapolated)" : "");
+        }
+    }
+    return 0;
+}
