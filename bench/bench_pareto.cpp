@@ -10,6 +10,8 @@
 //   bench_pareto [--ao-size N] [--gi-size N] [--truth-spp N] [--max-spp N] [--runs N]
 //                [--voxel-res N] [--case NAME]...   (cornell-ao, cornell-gi, sponza-ao,
 //                sponza-gi, overhang-ao, emitter-gi; default all)
+//                [--vct "KEY=VALUE ..."]...   VCT variants to measure instead of the default
+//                six (each a space-separated list of --param settings; "" is the defaults)
 //
 // The truth is the reference at --truth-spp (256) with another seed than the points', so a
 // point's error is its own noise and bias, not shared samples. Sponza: the view of
@@ -29,6 +31,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -89,6 +92,8 @@ double referenceCostAt(const std::vector<Point>& curve, double e, double Point::
 int main(int argc, char** argv) {
     int aoSize = 512, giSize = 256, truthSpp = 256, maxSpp = 128, runs = 3, voxelRes = 128;
     std::vector<std::string> only;
+    using Settings = std::vector<std::pair<std::string, std::string>>;
+    std::vector<std::pair<std::string, Settings>> vctVariants;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string a = argv[i];
         if (a == "--ao-size") aoSize = std::atoi(argv[i + 1]);
@@ -98,11 +103,32 @@ int main(int argc, char** argv) {
         else if (a == "--runs") runs = std::atoi(argv[i + 1]);
         else if (a == "--voxel-res") voxelRes = std::atoi(argv[i + 1]);
         else if (a == "--case") only.push_back(argv[i + 1]);
+        else if (a == "--vct") {
+            Settings settings;
+            std::istringstream words(argv[i + 1]);
+            for (std::string w; words >> w;) {
+                const size_t eq = w.find('=');
+                if (eq == std::string::npos || eq == 0) {
+                    std::cerr << "bench_pareto: --vct expects KEY=VALUE words, got '" << w << "'\n";
+                    return 2;
+                }
+                settings.push_back({w.substr(0, eq), w.substr(eq + 1)});
+            }
+            const std::string words0 = argv[i + 1];
+            vctVariants.push_back({words0.empty() ? "vct" : "vct " + words0, settings});
+        }
         else {
             std::cerr << "bench_pareto: unknown option " << a << "\n";
             return 2;
         }
     }
+    if (vctVariants.empty())
+        vctVariants = {{"vct", {}},
+                       {"vct trace-scale=2", {{"vct.trace-scale", "2"}}},
+                       {"vct trace-scale=4", {{"vct.trace-scale", "4"}}},
+                       {"vct cones=16", {{"vct.cones", "16"}}},
+                       {"vct cones=16 trace-scale=2", {{"vct.cones", "16"}, {"vct.trace-scale", "2"}}},
+                       {"vct cones=16 trace-scale=4", {{"vct.cones", "16"}, {"vct.trace-scale", "4"}}}};
     if (aoSize < 8 || giSize < 8 || truthSpp < 1 || maxSpp < 1 || runs < 1 || voxelRes < 8) {
         std::cerr << "bench_pareto: sizes >= 8, spp and runs >= 1\n";
         return 2;
@@ -166,13 +192,7 @@ int main(int argc, char** argv) {
             r.params.set(denoised + ".spp", std::to_string(spp));
             variants.push_back({denoised + " " + std::to_string(spp) + " spp", r});
         }
-        for (const auto& [label, params] : std::vector<std::pair<std::string, std::vector<std::pair<std::string, std::string>>>>{
-                 {"vct", {}},
-                 {"vct trace-scale=2", {{"vct.trace-scale", "2"}}},
-                 {"vct trace-scale=4", {{"vct.trace-scale", "4"}}},
-                 {"vct cones=16", {{"vct.cones", "16"}}},
-                 {"vct cones=16 trace-scale=2", {{"vct.cones", "16"}, {"vct.trace-scale", "2"}}},
-                 {"vct cones=16 trace-scale=4", {{"vct.cones", "16"}, {"vct.trace-scale", "4"}}}}) {
+        for (const auto& [label, params] : vctVariants) {
             RenderRequest r = request("vct", 1, 0);
             for (const auto& [k, v] : params) r.params.set(k, v);
             variants.push_back({label, r});

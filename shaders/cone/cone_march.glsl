@@ -2,7 +2,9 @@
 // mips, in voxel units (world / voxelSize, origin at the grid's min corner).
 //
 // Defines: CONE_GI (1: premultiplied radiance + alpha from grid.radiance; 0: alpha only from
-// grid.opacity), CONE_ANISO (1: blend the six directional textures above level 0).
+// grid.opacity), CONE_ANISO (1: blend the six directional textures above level 0),
+// CONE_ANISO_PACKED (AO over an AO grid: the three axes' directional opacity in one texture,
+// the same both ways along an axis: VoxelGrid::anisoOpacity).
 #include "cone/cone_common.glsl"
 #include "voxelize/opacity_depth.h"
 
@@ -10,7 +12,9 @@ layout(binding = CONE_UNIT_OPACITY) uniform sampler3D cone_isoTexture;
 #if CONE_GI
 layout(binding = CONE_UNIT_NORMAL) uniform sampler3D cone_normalTexture;
 #endif
-#if CONE_ANISO
+#if CONE_ANISO && defined(CONE_ANISO_PACKED)
+layout(binding = CONE_UNIT_ANISO) uniform sampler3D cone_anisoOpacity;  // rgb: along X, Y, Z
+#elif CONE_ANISO
 layout(binding = CONE_UNIT_ANISO + 0) uniform sampler3D cone_anisoPX;
 layout(binding = CONE_UNIT_ANISO + 1) uniform sampler3D cone_anisoNX;
 layout(binding = CONE_UNIT_ANISO + 2) uniform sampler3D cone_anisoPY;
@@ -32,10 +36,19 @@ vec4 cone_sampleIso(vec3 tc, float lod) {
 // Directional level `lod` (= pyramid level lod + 1) as seen by a cone travelling along d.
 vec4 cone_sampleAniso(vec3 tc, vec3 d, float lod) {
     vec3 w = cone_anisoWeights(d);
+#ifdef CONE_ANISO_PACKED
+    // The three axes in one fetch (an RGBA fetch costs about what a single-channel one does).
+    cone_fetches += 1.0;
+    vec3 axes = textureLod(cone_anisoOpacity, tc, lod).rgb;
+    vec4 x = vec4(0.0, 0.0, 0.0, axes.x);
+    vec4 y = vec4(0.0, 0.0, 0.0, axes.y);
+    vec4 z = vec4(0.0, 0.0, 0.0, axes.z);
+#else
     cone_fetches += 3.0;
     vec4 x = d.x >= 0.0 ? textureLod(cone_anisoPX, tc, lod) : textureLod(cone_anisoNX, tc, lod);
     vec4 y = d.y >= 0.0 ? textureLod(cone_anisoPY, tc, lod) : textureLod(cone_anisoNY, tc, lod);
     vec4 z = d.z >= 0.0 ? textureLod(cone_anisoPZ, tc, lod) : textureLod(cone_anisoNZ, tc, lod);
+#endif
     if (u.camera.w > 0.5) {
         // Optical-depth levels: filtered as depth, composited as opacity.
         x = vox_alphaFromDepth(x);

@@ -6,7 +6,9 @@
 //   resolve  (s > 1) every surface pixel takes the traced values of its four nearest blocks,
 //            weighted bilinearly and by how well each block's pixel shares its surface
 //            (cone_resolveAgreement), over the sixteen nearest by agreement alone when the
-//            four share none, and traces its own cones when no block does. (Tracing also
+//            four share none, and lists the pixel for the own stage when no block does;
+//   own      (s > 1, when the resolve listed pixels) each listed pixel traces its own cones
+//            (CONE_STAGE_OWN, cone_shared.h, says why this is a stage). (Tracing also
 //            where the blocks disagree, at a crease's dark band, was tried: on the Cornell
 //            box it traced half the pixels at s = 4 and moved the error against the ray
 //            tracer by 0.001.)
@@ -18,6 +20,15 @@
 //   vec4 cone_passTraced(ivec2 cell)               the traced image at a block
 //   void cone_passStore(ivec2 at, vec4 v)          writes the output (or traced) image
 // and the counts buffer cone_counts[] (per pixel (samples, fetches), zeroed by the caller).
+// (Loading a work group's blocks once into shared memory, as a GPU would, was tried: it gives
+// the same image and made the resolve slower on llvmpipe, whose barrier() is costly.)
+
+// The pixels that trace their own cones (the caller zeroes the count).
+layout(std430, binding = CONE_BINDING_OWN_LIST) buffer ConeOwnList {
+    uint cone_ownCount;
+    uint cone_ownPad[CONE_OWN_LIST_HEADER - 1];
+    ivec2 cone_ownPixels[];
+};
 
 // The pixel that traces block `cell`: the block's centre, clamped to the image.
 ivec2 cone_tracedPixel(ivec2 cell, int s) { return min(cell * s + ivec2(s / 2), u.image.xy - 1); }
@@ -70,15 +81,23 @@ void cone_resolve(ivec2 q) {
                 weight += w;
             }
     }
-    vec4 traced;
     if (weight < CONE_RESOLVE_MIN_WEIGHT) {
-        // No block shares this surface (an object narrower than a block): its own cones.
-        vec2 counts;
-        traced = cone_passTrace(q, p, n, ng, counts);
-        cone_counts[q.y * u.image.x + q.x] += counts;
-    } else {
-        traced = sum / weight;
+        // No block shares this surface (an object narrower than a block): its own cones,
+        // in the own stage.
+        cone_ownPixels[atomicAdd(cone_ownCount, 1u)] = q;
+        return;
     }
+    cone_passStore(q, cone_passFinish(q, sum / weight));
+}
+
+void cone_ownTrace(uint entry) {
+    if (entry >= cone_ownCount) return;
+    ivec2 q = cone_ownPixels[entry];
+    vec3 p, n, ng;
+    if (!cone_surface(q, p, n, ng)) return;  // listed pixels are surface pixels
+    vec2 counts;
+    vec4 traced = cone_passTrace(q, p, n, ng, counts);
+    cone_counts[q.y * u.image.x + q.x] = counts;
     cone_passStore(q, cone_passFinish(q, traced));
 }
 
@@ -87,6 +106,11 @@ void main() {
     int s = max(u.trace.x, 1);
     if (u.trace.y == CONE_STAGE_RESOLVE) {
         cone_resolve(cell);
+        return;
+    }
+    if (u.trace.y == CONE_STAGE_OWN) {
+        cone_ownTrace(uint(u.trace.z) + gl_WorkGroupID.x * uint(CONE_LOCAL_SIZE * CONE_LOCAL_SIZE) +
+                      gl_LocalInvocationIndex);
         return;
     }
     ivec2 blocks = (u.image.xy + s - 1) / s;

@@ -51,6 +51,15 @@ VCT_CONST int CONE_BOUNCE_GROUP = 64;       // cone_bounce.glsl: invocations per
 // distances of voxels and R, not pixels.
 VCT_CONST int CONE_STAGE_TRACE = 0;
 VCT_CONST int CONE_STAGE_RESOLVE = 1;
+// The pixels the resolve found no block for trace their own cones in a third stage, over the
+// list the resolve appended them to (cone_ownPixels), not in the resolve itself: a branch
+// that holds a whole cone march costs a SIMD machine (llvmpipe measured: 60 -> 90 ms at
+// 512^2) in every resolve invocation, even when no lane takes it.
+VCT_CONST int CONE_STAGE_OWN = 2;
+// The own stage's list: (count, 3 pad, then ivec2 per pixel). Binding 7 is also the bounce's
+// voxel list; no program has both.
+VCT_CONST int CONE_BINDING_OWN_LIST = 7;
+VCT_CONST int CONE_OWN_LIST_HEADER = 4;  // uints before the pixels
 VCT_CONST int CONE_IMAGE_TRACED = 1;  // image unit of the traced image in the resolve stage
 // 4: a block of 16 pixels. Coarser blocks stop resolving the G-buffer's detail (a 4-pixel
 // block of a 512^2 image is already a degree of a 60-degree view).
@@ -113,7 +122,8 @@ struct ConeUniforms {
                            // w = 1: the directional levels hold optical depth (opacity_depth.h)
     ivec4 config;          // x = cone count, y = AO mapping, z = mip level (rayMarch), w = channel (rayMarch)
     ivec4 image;           // x = width, y = height, z = cone jitter (1: rotate per pixel), w = its seed
-    ivec4 trace;           // pixel passes: x = trace scale (vct.trace-scale), y = stage (CONE_STAGE_*)
+    ivec4 trace;           // pixel passes: x = trace scale (vct.trace-scale), y = stage (CONE_STAGE_*),
+                           // z = the own stage's first list entry (dispatches of at most 65535 groups)
     vec4 cones[CONE_MAX_CONES];  // xyz = direction in the tangent frame (z = normal), w = weight
 };
 

@@ -92,7 +92,7 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
         // The mips (and the directional textures, rebuilt anew) of the previous total.
         buildMips(grid, cone.anisotropic, mipsTimer, "bounce_mips", wantsDepthLevels(cone));
         ubo = bindConeUniforms(coneUniforms(true, grid, 2.f * diagonal, bounceSky ? sky : 0.f, cone));
-        const bool aniso = bindGridTextures(true, grid, cone);
+        const bool aniso = bindGridTextures(true, grid, cone) != ConeDirectional::None;
         glBindTextureUnit(gpu::CONE_UNIT_BOUNCE_DIRECT, direct.id());
         glBindTextureUnit(gpu::CONE_UNIT_BOUNCE_ALBEDO, grid.albedo.id());
         if (i == 0) {

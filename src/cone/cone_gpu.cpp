@@ -26,11 +26,19 @@ GlBuffer bindConeUniforms(const gpu::ConeUniforms& u) {
 
 namespace {
 
-bool useAniso(const VoxelGrid& grid, const ConeSettings& s) {
-    if (!s.anisotropic || !grid.anisotropic || grid.levels < 2) return false;
-    for (const auto& t : grid.anisoRadiance)
-        if (!t) return false;
-    return true;
+template <size_t N>
+bool allPresent(const std::array<GlTexture, N>& textures) {
+    return std::all_of(textures.begin(), textures.end(), [](const GlTexture& t) { return bool(t); });
+}
+
+// The directional levels a pass uses: none when vct.aniso=0 or the grid has none; an AO
+// pass reads an AO grid's packed opacity, a GI pass (or an AO pass sharing a lit grid) the
+// six RGBA textures.
+ConeDirectional directionalLevels(bool gi, const VoxelGrid& grid, const ConeSettings& s) {
+    if (!s.anisotropic || !grid.anisotropic || grid.levels < 2) return ConeDirectional::None;
+    if (allPresent(grid.anisoRadiance)) return ConeDirectional::Six;
+    if (!gi && grid.anisoOpacity) return ConeDirectional::Packed;
+    return ConeDirectional::None;
 }
 
 }  // namespace
@@ -51,7 +59,7 @@ gpu::ConeUniforms coneUniforms(bool gi, const VoxelGrid& grid, float maxDistWorl
     const std::vector<glm::vec4>& cones = lanes.cones;
     u.config = glm::ivec4(int(cones.size()), gi ? gpu::CONE_AO_LINEAR : int(settings.aoMapping), 0, 0);
     for (size_t i = 0; i < cones.size(); ++i) u.cones[i] = cones[i];
-    u.camera.w = grid.depthLevels && useAniso(grid, settings) ? 1.f : 0.f;
+    u.camera.w = grid.depthLevels && directionalLevels(gi, grid, settings) != ConeDirectional::None ? 1.f : 0.f;
     u.trace = glm::ivec4(settings.traceScale, gpu::CONE_STAGE_TRACE, 0, 0);
     return u;
 }
@@ -60,13 +68,14 @@ glm::ivec4 conePixelImage(const GBuffer& gbuffer, const ConeSettings& settings) 
     return glm::ivec4(gbuffer.width, gbuffer.height, settings.jitter ? 1 : 0, int(settings.seed));
 }
 
-bool bindGridTextures(bool gi, const VoxelGrid& grid, const ConeSettings& settings) {
-    const bool aniso = useAniso(grid, settings);
+ConeDirectional bindGridTextures(bool gi, const VoxelGrid& grid, const ConeSettings& settings) {
+    const ConeDirectional directional = directionalLevels(gi, grid, settings);
     glBindTextureUnit(gpu::CONE_UNIT_OPACITY, gi ? grid.radiance.id() : grid.opacity.id());
     if (gi) glBindTextureUnit(gpu::CONE_UNIT_NORMAL, grid.normal.id());
-    if (aniso)
+    if (directional == ConeDirectional::Six)
         for (int i = 0; i < 6; ++i) glBindTextureUnit(gpu::CONE_UNIT_ANISO + i, grid.anisoRadiance[i].id());
-    return aniso;
+    if (directional == ConeDirectional::Packed) glBindTextureUnit(gpu::CONE_UNIT_ANISO, grid.anisoOpacity.id());
+    return directional;
 }
 
 BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffer, float maxDistWorld, float sky,
@@ -76,9 +85,49 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
     BoundConePass bound;
     bound.ubo = bindConeUniforms(u);
     bindGBufferTextures(gbuffer);  // the shaders texelFetch position, normal, geomNormal, albedo
-    bound.aniso = bindGridTextures(gi, grid, settings);
+    bound.directional = bindGridTextures(gi, grid, settings);
     return bound;
 }
+
+namespace {
+
+const GLbitfield kPixelPassWritten = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                                     GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
+                                     GL_SHADER_STORAGE_BARRIER_BIT;
+
+// ConeUniforms::trace's component `component` in the bound pass's uniform buffer.
+void setTraceUniform(GLuint ubo, int component, GLint value) {
+    glNamedBufferSubData(ubo, GLintptr(offsetof(gpu::ConeUniforms, trace) + size_t(component) * sizeof(GLint)),
+                         sizeof(value), &value);
+}
+
+// One stage of a pixel pass writing `image` over w x h invocations.
+void dispatchStage(GLuint ubo, GLint stage, GLuint image, GLenum format, int w, int h) {
+    setTraceUniform(ubo, 1, stage);
+    glBindImageTexture(gpu::CONE_IMAGE_OUTPUT, image, 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+    glDispatchCompute(groupCount(w, gpu::CONE_LOCAL_SIZE), groupCount(h, gpu::CONE_LOCAL_SIZE), 1);
+    glMemoryBarrier(kPixelPassWritten);
+}
+
+// The own stage over the pixels the resolve listed. Their count comes back to the CPU (four
+// bytes) rather than feeding an indirect dispatch: llvmpipe was seen to read indirect
+// arguments before the pass that wrote them had finished (voxelize.cpp).
+void dispatchOwnStage(GLuint ubo, GLuint list, GLuint image, GLenum format) {
+    GLuint listed = 0;
+    glGetNamedBufferSubData(list, 0, sizeof(listed), &listed);
+    if (listed == 0) return;
+    setTraceUniform(ubo, 1, gpu::CONE_STAGE_OWN);
+    glBindImageTexture(gpu::CONE_IMAGE_OUTPUT, image, 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+    const GLuint perGroup = GLuint(gpu::CONE_LOCAL_SIZE * gpu::CONE_LOCAL_SIZE);
+    const GLuint maxGroups = 65535;  // the GL minimum of GL_MAX_COMPUTE_WORK_GROUP_COUNT
+    for (GLuint base = 0; base < listed; base += maxGroups * perGroup) {
+        setTraceUniform(ubo, 2, GLint(base));
+        glDispatchCompute(std::min(maxGroups, (listed - base + perGroup - 1) / perGroup), 1, 1);
+    }
+    glMemoryBarrier(kPixelPassWritten);
+}
+
+}  // namespace
 
 GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlBuffer& counts, GLuint ubo,
                             int traceScale) {
@@ -91,30 +140,22 @@ GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlB
     glClearNamedBufferData(counts.id(), GL_R32F, GL_RED, GL_FLOAT, nullptr);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_COUNTS, counts.id());
     glUseProgram(program);
-    const GLbitfield written = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                               GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
-                               GL_SHADER_STORAGE_BARRIER_BIT;
     if (s == 1) {
-        glBindImageTexture(gpu::CONE_IMAGE_OUTPUT, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
-        glDispatchCompute(groupCount(gbuffer.width, gpu::CONE_LOCAL_SIZE),
-                          groupCount(gbuffer.height, gpu::CONE_LOCAL_SIZE), 1);
-        glMemoryBarrier(written);
+        dispatchStage(ubo, gpu::CONE_STAGE_TRACE, out.id(), format, gbuffer.width, gbuffer.height);
     } else {
         // The trace stage: one pixel per s x s block into the traced image.
         const int tw = (gbuffer.width + s - 1) / s, th = (gbuffer.height + s - 1) / s;
         GlTexture traced = createTexture2D(format, tw, th);
-        glBindImageTexture(gpu::CONE_IMAGE_OUTPUT, traced.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
-        glDispatchCompute(groupCount(tw, gpu::CONE_LOCAL_SIZE), groupCount(th, gpu::CONE_LOCAL_SIZE), 1);
-        glMemoryBarrier(written);
-        // The resolve stage over every pixel (cone_resolve.glsl).
-        const GLint stage = gpu::CONE_STAGE_RESOLVE;
-        glNamedBufferSubData(ubo, GLintptr(offsetof(gpu::ConeUniforms, trace) + sizeof(GLint)), sizeof(stage), &stage);
+        dispatchStage(ubo, gpu::CONE_STAGE_TRACE, traced.id(), format, tw, th);
+        // The resolve stage over every pixel (cone_resolve.glsl), listing those without a block.
+        GlBuffer own = createBuffer((gpu::CONE_OWN_LIST_HEADER + 2 * pixels) * sizeof(GLuint));
+        glClearNamedBufferSubData(own.id(), GL_R32UI, 0, sizeof(GLuint), GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_OWN_LIST, own.id());
         glBindImageTexture(gpu::CONE_IMAGE_TRACED, traced.id(), 0, GL_FALSE, 0, GL_READ_ONLY, format);
-        glBindImageTexture(gpu::CONE_IMAGE_OUTPUT, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
-        glDispatchCompute(groupCount(gbuffer.width, gpu::CONE_LOCAL_SIZE),
-                          groupCount(gbuffer.height, gpu::CONE_LOCAL_SIZE), 1);
-        glMemoryBarrier(written);
+        dispatchStage(ubo, gpu::CONE_STAGE_RESOLVE, out.id(), format, gbuffer.width, gbuffer.height);
         glBindImageTexture(gpu::CONE_IMAGE_TRACED, 0, 0, GL_FALSE, 0, GL_READ_ONLY, format);
+        dispatchOwnStage(ubo, own.id(), out.id(), format);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_OWN_LIST, 0);
     }
     glUseProgram(0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_COUNTS, 0);

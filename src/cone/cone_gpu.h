@@ -2,6 +2,7 @@
 // block, binding the grid's textures.
 #pragma once
 
+#include "cone/cone_programs.h"
 #include "cone/cone_settings.h"
 #include "cone/cone_shared.h"
 #include "cone/cone_trace.h"
@@ -33,16 +34,17 @@ gpu::ConeUniforms coneUniforms(bool gi, const VoxelGrid& grid, float maxDistWorl
 glm::ivec4 conePixelImage(const GBuffer& gbuffer, const ConeSettings& settings);
 
 // Binds the grid's textures a cone pass samples (opacity or radiance, normals for GI's
-// facing test, the directional mips when used); returns whether the directional mips are
-// used (the CONE_ANISO variant of the pass's program).
-bool bindGridTextures(bool gi, const VoxelGrid& grid, const ConeSettings& settings);
+// facing test, the directional levels when used); returns which directional levels are
+// bound (the variant of the pass's program: an AO pass over an AO grid samples its packed
+// opacity, over a lit grid the six RGBA textures' alpha).
+ConeDirectional bindGridTextures(bool gi, const VoxelGrid& grid, const ConeSettings& settings);
 
 // One cone pass bound and ready for its program's dispatch: uniforms uploaded and bound,
 // the G-buffer, the grid's textures (opacity or radiance, directional mips, normals for
-// GI's facing test) on their units. `aniso`: the directional mips are bound.
+// GI's facing test) on their units. `directional`: the directional levels bound.
 struct BoundConePass {
     GlBuffer ubo;
-    bool aniso = false;
+    ConeDirectional directional = ConeDirectional::None;
 };
 BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffer, float maxDistWorld, float sky,
                            const ConeSettings& settings);
@@ -50,8 +52,9 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
 // Runs a bound pixel pass: `program` over the G-buffer's pixels in CONE_LOCAL_SIZE tiles,
 // writing a new GL_RGBA32F (GI) or GL_R32F (AO) texture of the G-buffer's size, and into a
 // new `counts` buffer each pixel's (samples, fetches). With `traceScale` s > 1 it runs the
-// pass's two stages (CONE_STAGE_TRACE into an image of ceil(size / s), then CONE_STAGE_RESOLVE
-// over every pixel), setting the stage in `ubo`, the pass's bound ConeUniforms.
+// pass's stages (CONE_STAGE_TRACE into an image of ceil(size / s), CONE_STAGE_RESOLVE over
+// every pixel, then CONE_STAGE_OWN over the pixels the resolve listed, when it listed any),
+// setting the stage in `ubo`, the pass's bound ConeUniforms.
 GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlBuffer& counts, GLuint ubo,
                             int traceScale);
 

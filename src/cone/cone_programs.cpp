@@ -7,10 +7,15 @@ namespace vct {
 
 namespace {
 ShaderDefines coneDefines(bool gi, bool aniso) { return {{"CONE_GI", gi ? "1" : "0"}, {"CONE_ANISO", aniso ? "1" : "0"}}; }
+ShaderDefines coneDefines(bool gi, ConeDirectional directional) {
+    ShaderDefines d = coneDefines(gi, directional != ConeDirectional::None);
+    if (directional == ConeDirectional::Packed) d.push_back({"CONE_ANISO_PACKED", "1"});
+    return d;
+}
 }  // namespace
 
-ProgramKey conePassProgramKey(bool gi, bool aniso) {
-    return computeProgramKey(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl", coneDefines(gi, aniso));
+ProgramKey conePassProgramKey(bool gi, ConeDirectional directional) {
+    return computeProgramKey(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl", coneDefines(gi, directional));
 }
 
 ProgramKey clipmapConePassProgramKey(bool gi) {
@@ -34,8 +39,8 @@ ProgramKey voxelViewProgramKey(int channel) {
     return computeProgramKey("cone/cone_raymarch.glsl", d);
 }
 
-ProgramKey coneCountProgramKey(bool gi, bool aniso) {
-    return computeProgramKey("bench/cone_count.glsl", coneDefines(gi, aniso));
+ProgramKey coneCountProgramKey(bool gi, ConeDirectional directional) {
+    return computeProgramKey("bench/cone_count.glsl", coneDefines(gi, directional));
 }
 
 ProgramKey fetchBenchProgramKey() { return computeProgramKey("bench/fetch.glsl"); }
@@ -45,9 +50,10 @@ ProgramKey coneMarchCheckProgramKey() { return computeProgramKey("cone/cone_marc
 std::vector<ProgramKey> coneProgramVariants() {
     std::vector<ProgramKey> v;
     for (bool gi : {false, true}) {
-        for (bool aniso : {false, true}) {
-            v.push_back(conePassProgramKey(gi, aniso));
-            v.push_back(coneCountProgramKey(gi, aniso));
+        for (ConeDirectional d : {ConeDirectional::None, ConeDirectional::Six, ConeDirectional::Packed}) {
+            if (gi && d == ConeDirectional::Packed) continue;  // a lit grid has its six
+            v.push_back(conePassProgramKey(gi, d));
+            v.push_back(coneCountProgramKey(gi, d));
         }
         v.push_back(clipmapConePassProgramKey(gi));
     }

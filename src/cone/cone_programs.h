@@ -8,8 +8,12 @@
 
 namespace vct {
 
-// cone_ao.glsl / cone_gi.glsl over one dense grid, with or without the directional mips.
-ProgramKey conePassProgramKey(bool gi, bool aniso);
+// Which directional levels a cone pass samples (VoxelGrid): none (the isotropic mips), a lit
+// grid's six RGBA textures, or an AO grid's one texture of the three axes' opacity (AO only).
+enum class ConeDirectional { None, Six, Packed };
+
+// cone_ao.glsl / cone_gi.glsl over one dense grid, with its directional levels or without.
+ProgramKey conePassProgramKey(bool gi, ConeDirectional directional);
 // The same over a clipmap's levels (isotropic).
 ProgramKey clipmapConePassProgramKey(bool gi);
 // cone_bounce.glsl: the gather of one bounce, or (listPass) the list of voxels that gather.
@@ -17,7 +21,7 @@ ProgramKey coneBounceProgramKey(bool aniso, GLenum radianceFormat, bool listPass
 // cone_raymarch.glsl: the voxel_* views; channel is gpu::CONE_CHANNEL_*.
 ProgramKey voxelViewProgramKey(int channel);
 // bench/: the cone pass with a fetch counter, and the bare trilinear-fetch shader.
-ProgramKey coneCountProgramKey(bool gi, bool aniso);
+ProgramKey coneCountProgramKey(bool gi, ConeDirectional directional);
 ProgramKey fetchBenchProgramKey();
 // cone_march_check.glsl: the shared march's functions on a buffer of inputs (the test that
 // holds the CPU tracer's march to the shaders').

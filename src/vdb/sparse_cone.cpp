@@ -50,9 +50,12 @@ struct LevelSampler {
     // the shader would make, whatever levels the CPU blends for it.
     double fetches = 0.0;
     bool depth = false;  // the directional levels hold optical depth (opacity_depth.h)
+    // Fetches of one directional sample: the dense AO grid's one texture of the three axes'
+    // opacity (VoxelGrid::anisoOpacity), or a lit grid's three of its six RGBA textures.
+    double directionalFetches = 3.0;
 
     LevelSampler(const SparseVoxelScene& v, const MarchParams& params, bool gi)
-        : mp(&params), depth(v.depthLevels) {
+        : mp(&params), depth(v.depthLevels), directionalFetches(v.injected() ? 3.0 : 1.0) {
         for (const auto& g : v.opacityLevels) opacity.push_back(std::make_unique<OpacityAcc>(g->tree()));
         if (gi) {
             for (const auto& g : v.radianceLevels) radiance.push_back(std::make_unique<RadianceAcc>(g->tree()));
@@ -130,7 +133,7 @@ struct LevelSampler {
             fetches += 1.0;
             return acrossLevels(lod, [&](int level) { return sampleLevel(p, level); });
         }
-        fetches += lod < 1.f ? 4.0 : 3.0;
+        fetches += directionalFetches + (lod < 1.f ? 1.0 : 0.0);
         glm::vec4 directional = sampleAniso(p, d, lod);
         if (lod < 1.f) {
             if (depth)

@@ -7,6 +7,7 @@
 #include "voxelize/voxelize_shared.h"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 
 namespace vct {
@@ -61,29 +62,40 @@ struct AnisoPrograms {
     GLuint rest = 0;   // from the directional texture's previous level
 };
 
+// A lit grid's directional levels carry radiance; an AO grid's hold opacity alone, the three
+// axes in one texture (VoxelGrid::anisoOpacity).
+bool packsOpacity(const VoxelGrid& grid) { return !grid.radiance; }
+
 GLenum anisoBaseFormat(const VoxelGrid& grid) {
     return grid.radiance ? textureInternalFormat(grid.radiance.id()) : GL_R16F;
 }
 
-// RGBA16F per the contract, RGBA32F when the radiance itself needed float precision.
+// RGBA16F per the contract, RGBA32F when the radiance itself needed float precision (the
+// packed opacity levels: RGBA16F).
 GLenum anisoFormatFor(GLenum baseFormat) { return baseFormat == GL_RGBA32F ? GL_RGBA32F : GL_RGBA16F; }
 
 AnisoPrograms buildAnisoPrograms(const VoxelGrid& grid) {
     const GLenum baseFormat = anisoBaseFormat(grid), anisoFormat = anisoFormatFor(baseFormat);
-    return {cachedProgram(anisotropicMipProgramKey(baseFormat, anisoFormat)),
-            cachedProgram(anisotropicMipProgramKey(anisoFormat, anisoFormat))};
+    const bool packed = packsOpacity(grid);
+    return {cachedProgram(anisotropicMipProgramKey(baseFormat, anisoFormat, packed)),
+            cachedProgram(anisotropicMipProgramKey(anisoFormat, anisoFormat, packed))};
 }
 
 void buildAnisotropicMips(VoxelGrid& grid, const AnisoPrograms& programs, bool depthLevels) {
     const int anisoLevels = grid.levels - 1;
     if (anisoLevels < 1) throw InternalError("buildAnisotropicMips", "voxel grid too small for anisotropic mips");
-    const bool hasRadiance = bool(grid.radiance);
+    const bool packed = packsOpacity(grid);
     const GLenum baseFormat = anisoBaseFormat(grid), anisoFormat = anisoFormatFor(baseFormat);
 
     const glm::ivec3 base = levelSize(grid.resolution, 1);
-    for (int d = 0; d < 6; ++d)
-        grid.anisoRadiance[size_t(d)] = createTexture3D(anisoFormat, base.x, base.y, base.z, anisoLevels);
-    const GLuint baseTexture = hasRadiance ? grid.radiance.id() : grid.opacity.id();
+    // Lit: one texture per direction (+X, -X, +Y, -Y, +Z, -Z); packed: one for the three axes.
+    std::array<GlTexture, 6>& lit = grid.anisoRadiance;
+    for (GlTexture& t : lit) t.reset();
+    grid.anisoOpacity.reset();
+    const int textures = packed ? 1 : 6;
+    for (int d = 0; d < textures; ++d)
+        (packed ? grid.anisoOpacity : lit[size_t(d)]) = createTexture3D(anisoFormat, base.x, base.y, base.z, anisoLevels);
+    const GLuint baseTexture = packed ? grid.opacity.id() : grid.radiance.id();
     for (int level = 0; level < anisoLevels; ++level) {
         const GLuint p = level == 0 ? programs.first : programs.rest;
         glUseProgram(p);
@@ -91,9 +103,9 @@ void buildAnisotropicMips(VoxelGrid& grid, const AnisoPrograms& programs, bool d
         glm::ivec3 src = levelSize(grid.resolution, level), dst = levelSize(grid.resolution, level + 1);
         setUniform(p, "uSrcSize", src);
         setUniform(p, "uDstSize", dst);
-        for (int d = 0; d < 6; ++d) {
-            const GlTexture& out = grid.anisoRadiance[size_t(d)];
-            setUniform(p, "uAxis", d / 2);
+        for (int d = 0; d < textures; ++d) {
+            const GlTexture& out = packed ? grid.anisoOpacity : lit[size_t(d)];
+            setUniform(p, "uAxis", packed ? 0 : d / 2);
             setUniform(p, "uSign", d % 2 == 0 ? 1 : -1);
             setUniform(p, "uDepthIn", depthLevels && level > 0 ? 1 : 0);
             setUniform(p, "uDepthOut", depthLevels ? 1 : 0);
@@ -120,6 +132,7 @@ void buildMips(VoxelGrid& grid, bool anisotropic, PassTimer& timer, const std::s
     if (anisotropic) buildAnisotropicMips(grid, aniso, depthLevels);
     else {
         for (GlTexture& t : grid.anisoRadiance) t.reset();
+        grid.anisoOpacity.reset();
         grid.anisotropic = false;
         grid.depthLevels = false;
     }

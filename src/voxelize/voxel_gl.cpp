@@ -81,6 +81,7 @@ size_t voxelGridMemoryBytes(const VoxelGrid& g) {
     size_t total = textureBytes(g.opacity) + textureBytes(g.albedo) + textureBytes(g.normal) +
                    textureBytes(g.emission) + textureBytes(g.radiance) + textureBytes(g.twoSided);
     for (const GlTexture& t : g.anisoRadiance) total += textureBytes(t);
+    total += textureBytes(g.anisoOpacity);
     return total;
 }
 

@@ -47,7 +47,13 @@ struct VoxelGrid {
     GlTexture twoSided;
     GlTexture radiance;  // GL_RGBA16F, 3D, mipmapped, premultiplied; empty until injection
     bool anisotropic = false;
-    std::array<GlTexture, 6> anisoRadiance;  // see above; empty unless anisotropic
+    std::array<GlTexture, 6> anisoRadiance;  // see above; empty unless anisotropic and lit
+    // An AO grid's directional levels (no radiance to carry): GL_RGBA16F, levels as
+    // anisoRadiance's, rgb = the directional opacity along X, Y, Z (a unused). Opacity alone
+    // is the same both ways along an axis (a line's transmittance is the product of its
+    // voxels', in either order; only radiance depends on which voxel is in front), so one
+    // texture serves the six directions and a cone reads its three in one fetch.
+    GlTexture anisoOpacity;
     // The directional textures hold optical depth (radiance * tau, tau), not (premultiplied
     // radiance, alpha): shaders/voxelize/opacity_depth.h, vct.opacity=depth.
     bool depthLevels = false;

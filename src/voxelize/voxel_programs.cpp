@@ -36,9 +36,11 @@ ProgramKey isotropicMipProgramKey(GLenum radianceFormat, bool normals) {
     return computeProgramKey("voxelize/mip_iso.glsl", d);
 }
 
-ProgramKey anisotropicMipProgramKey(GLenum srcFormat, GLenum dstFormat) {
+ProgramKey anisotropicMipProgramKey(GLenum srcFormat, GLenum dstFormat, bool packedOpacity) {
     ShaderDefines d = {{"SRC_FORMAT", glslImageFormat(srcFormat)}, {"DST_FORMAT", glslImageFormat(dstFormat)}};
     if (srcFormat == GL_R16F) d.push_back({"SOURCE_OPACITY", "1"});
+    else if (packedOpacity) d.push_back({"SOURCE_PACKED", "1"});
+    if (packedOpacity) d.push_back({"DEST_PACKED", "1"});
     return computeProgramKey("voxelize/mip_aniso.glsl", d);
 }
 
@@ -62,8 +64,9 @@ std::vector<ProgramKey> voxelProgramVariants() {
     v.push_back(isotropicMipProgramKey(0, false));
     for (GLenum f : radianceFormats)
         for (bool normals : {false, true}) v.push_back(isotropicMipProgramKey(f, normals));
-    v.push_back(anisotropicMipProgramKey(GL_R16F, GL_RGBA16F));
-    for (GLenum f : radianceFormats) v.push_back(anisotropicMipProgramKey(f, f));
+    v.push_back(anisotropicMipProgramKey(GL_R16F, GL_RGBA16F, true));
+    v.push_back(anisotropicMipProgramKey(GL_RGBA16F, GL_RGBA16F, true));
+    for (GLenum f : radianceFormats) v.push_back(anisotropicMipProgramKey(f, f, false));
     for (GLenum f : {GLenum(GL_R16F), GLenum(GL_RGBA16F), GLenum(GL_RGBA32F)}) v.push_back(clipmapNestProgramKey(f));
     return v;
 }

@@ -19,8 +19,9 @@ ProgramKey resolveProgramKey(bool hasEmission, GLenum emissionFormat, bool twoSi
 ProgramKey injectProgramKey(GLenum radianceFormat, int outerLevels, bool twoSided);
 // mip_iso.glsl: opacity, and radiance (radianceFormat != 0) and normals when the grid has them.
 ProgramKey isotropicMipProgramKey(GLenum radianceFormat, bool normals);
-// mip_aniso.glsl: one directional level from `srcFormat` (GL_R16F: the opacity base level).
-ProgramKey anisotropicMipProgramKey(GLenum srcFormat, GLenum dstFormat);
+// mip_aniso.glsl: one directional level from `srcFormat` (GL_R16F: the opacity base level);
+// `packedOpacity`: an AO grid's levels, the three axes' opacity in one (VoxelGrid::anisoOpacity).
+ProgramKey anisotropicMipProgramKey(GLenum srcFormat, GLenum dstFormat, bool packedOpacity);
 // clipmap_nest.glsl: a finer level's means into the coarser level's voxels they fill, in `dstFormat`.
 ProgramKey clipmapNestProgramKey(GLenum dstFormat);
 

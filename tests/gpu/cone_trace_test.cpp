@@ -2,6 +2,7 @@
 // G-buffers: open plane, wall, closed box, distance limit, emissive shell, inspection view.
 // AO is compared with an independent CPU ray cast against the same boxes (the exact A_R of
 // the voxelized geometry), or with closed forms.
+#include "cone/cone_cost.h"
 #include "cone/cone_set.h"
 #include "cone/cone_settings.h"
 #include "cone/cone_shared.h"
@@ -615,6 +616,67 @@ TEST(VoxelView, ShowsTheBlockAndNotTheSky) {
         EXPECT_NEAR(radiance.at(16, 16, c), glm::vec3(0.5f, 1.f, 2.f)[c], 0.02f * glm::vec3(0.5f, 1.f, 2.f)[c]);
     }
     EXPECT_EQ(timer.timings().back().name, "cone_view");
+}
+
+// An AO grid's packed directional opacity (VoxelGrid::anisoOpacity: rgb = along X, Y, Z, the
+// same both ways) gives the image the six RGBA textures' alpha gives, in one fetch per
+// directional sample instead of three. The packed texture is built here from the six's
+// +X, +Y, +Z levels on the CPU (the mip builder's packing has its own test, Mips.*); the
+// six's -X, -Y, -Z levels hold the same opacities, composited in the other order.
+TEST(ConeAniso, PackedOpacityGivesTheSixTexturesImageInFewerFetches) {
+    HandScene s = wallScene();
+    VoxelGrid six = buildGrid(s, false, true);
+    VoxelGrid packed = buildGrid(s, false, true);
+    const int levels = six.levels - 1;
+    packed.anisoOpacity = createTexture3D(GL_RGBA16F, s.res / 2, s.res / 2, s.res / 2, levels);
+    double signGap = 0.0;
+    for (int l = 0, r = s.res / 2; l < levels; ++l, r /= 2) {
+        std::vector<glm::vec4> texels(size_t(r) * r * r, glm::vec4(0.f));
+        for (int axis = 0; axis < 3; ++axis) {
+            std::vector<glm::vec4> plus(texels.size()), minus(texels.size());
+            glGetTextureImage(six.anisoRadiance[size_t(2 * axis)].id(), l, GL_RGBA, GL_FLOAT,
+                              GLsizei(plus.size() * sizeof(glm::vec4)), plus.data());
+            glGetTextureImage(six.anisoRadiance[size_t(2 * axis + 1)].id(), l, GL_RGBA, GL_FLOAT,
+                              GLsizei(minus.size() * sizeof(glm::vec4)), minus.data());
+            for (size_t i = 0; i < plus.size(); ++i) {
+                texels[i][axis] = plus[i].a;
+                signGap = std::max(signGap, double(std::abs(plus[i].a - minus[i].a)));
+            }
+        }
+        upload3D(packed.anisoOpacity.id(), l, r, texels, false);
+    }
+    EXPECT_LT(signGap, 1e-3);  // half-float rounding of the two composite orders at most
+    for (GlTexture& t : packed.anisoRadiance) t.reset();
+    GlContext::shared().checkErrors("packed opacity");
+    // Points beside the wall and on the floor: cones of every octant.
+    const std::vector<SurfacePoint> pts = {{{36.f, 4.f, 32.f}, kUp},
+                                           {{39.f, 20.f, 20.f}, glm::vec3(-1, 0, 0)},
+                                           {{10.f, 4.f, 10.f}, kUp},
+                                           {{30.f, 12.f, 40.f}, glm::normalize(glm::vec3(-1, 1, -1))},
+                                           {{20.f, 6.f, 50.f}, glm::normalize(glm::vec3(1, 1, 1))}};
+    GBuffer gb = makeGBuffer(s, pts);
+    for (int cones : {6, 16}) {
+        SCOPED_TRACE(std::to_string(cones) + " cones");
+        const ConeSettings c = settingsFor(cones, true);
+        PassTimer timer;
+        ConeCost costSix, costPacked;
+        Image a = readTexture2D(coneTraceAO(six, gb, gbufView(), 12.f * s.voxelSize, c, timer, &costSix).id(),
+                                kGbufSize, kGbufSize, 1);
+        Image b = readTexture2D(coneTraceAO(packed, gb, gbufView(), 12.f * s.voxelSize, c, timer, &costPacked).id(),
+                                kGbufSize, kGbufSize, 1);
+        GlContext::shared().checkErrors("packed opacity AO");
+        double occluded = 0.0;
+        for (size_t i = 0; i < pts.size(); ++i) {
+            EXPECT_NEAR(pixel(a, i), pixel(b, i), 1e-4) << "point " << i;
+            occluded += 1.0 - pixel(a, i);
+        }
+        EXPECT_GT(occluded, 0.1);  // the wall occludes: the directional levels are read
+        EXPECT_EQ(costPacked.samples, costSix.samples);
+        // A directional sample costs 1 fetch instead of 3; the base level's, at most one per
+        // sample, stay: (1 + b) / (3 + b) <= 1/2 of the six's.
+        EXPECT_LE(costPacked.fetches, 0.5 * costSix.fetches);
+        EXPECT_GT(costPacked.fetches, costSix.fetches / 3.0);
+    }
 }
 
 // Cost at the brief's reference resolution (run with --gtest_also_run_disabled_tests).

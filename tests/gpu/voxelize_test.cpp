@@ -597,14 +597,19 @@ TEST(Mips, AnisotropicCompositesAlongTheAxisAndAveragesAcross) {
     buildMips(g, true, timer);  // AO-only: aniso alpha from opacity
     GlContext::shared().checkErrors("aniso mips");
     ASSERT_TRUE(g.anisotropic);
+    // An AO grid packs its directional opacity into one texture: rgb = along X, Y, Z (the same
+    // both ways along an axis).
+    for (const GlTexture& t : g.anisoRadiance) EXPECT_FALSE(t);
+    ASSERT_TRUE(g.anisoOpacity);
+    const Volume axes = readVolume(g.anisoOpacity, 0, 4);
     // Mip voxel (2, 4, 4) has children x = 4 (opaque) and 5 (empty), y/z all in the plane.
     std::array<float, 6> alpha;
-    for (int d = 0; d < 6; ++d) alpha[size_t(d)] = readVolume(g.anisoRadiance[size_t(d)], 0, 4).at(2, 4, 4, 3);
+    for (int d = 0; d < 6; ++d) alpha[size_t(d)] = axes.at(2, 4, 4, d / 2);
     EXPECT_NEAR(alpha[0], 1.f, 1e-3);  // +X: the opaque child is in front
     EXPECT_NEAR(alpha[1], 1.f, 1e-3);  // -X: behind an empty child, still fully blocked
     for (int d = 2; d < 6; ++d) EXPECT_NEAR(alpha[size_t(d)], 0.5f, 1e-3) << "direction " << d;
     EXPECT_NEAR(readVolume(g.opacity, 1, 1).at(2, 4, 4), 0.5f, 1e-3);
     // Next level: (1, 2, 2) covers x 2..3 of level 0 of aniso: (+X) composite of x=2 (alpha 1)
     // with x=3 (0) then averaged across: 1 along X.
-    EXPECT_NEAR(readVolume(g.anisoRadiance[0], 1, 4).at(1, 2, 2, 3), 1.f, 1e-3);
+    EXPECT_NEAR(readVolume(g.anisoOpacity, 1, 4).at(1, 2, 2, 0), 1.f, 1e-3);
 }
