@@ -23,7 +23,7 @@ layout(DST_FORMAT, binding = 1) uniform writeonly image3D dst;
 
 uniform ivec3 uSrcSize;
 uniform ivec3 uDstSize;
-uniform int uAxis;  // 0, 1, 2 (not DEST_PACKED)
+uniform int uAxis;  // 0, 1, 2 (DEST_PACKED: unused, every axis)
 uniform int uSign;  // +1 or -1: direction of travel
 uniform int uDepthIn;   // 1: the source is a directional level holding optical depth
 uniform int uDepthOut;  // 1: store optical depth (vox_depthFromAlpha)
@@ -70,9 +70,9 @@ void main() {
     ivec3 lo, hi;
     mip_childRange(v, uSrcSize, uDstSize, lo, hi);
 #ifdef DEST_PACKED
-    vec4 bySign = vec4(0.0);
-    for (int axis = 0; axis < 3; ++axis) bySign[axis] = mip_directional(lo, hi, axis, uSign).a;
-    imageStore(dst, v, bySign);
+    vec4 axes = vec4(0.0);
+    for (int axis = 0; axis < 3; ++axis) axes[axis] = mip_directional(lo, hi, axis, uSign).a;
+    imageStore(dst, v, axes);
 #else
     imageStore(dst, v, mip_directional(lo, hi, uAxis, uSign));
 #endif

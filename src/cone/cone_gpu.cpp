@@ -101,12 +101,18 @@ void setTraceUniform(GLuint ubo, int component, GLint value) {
                          sizeof(value), &value);
 }
 
-// One stage of a pixel pass writing `image` over w x h invocations.
-void dispatchStage(GLuint ubo, GLint stage, GLuint image, GLenum format, int w, int h) {
+// One stage of a pixel pass writing `image`, over groups x groupsY work groups.
+void dispatchStageGroups(GLuint ubo, GLint stage, GLuint image, GLenum format, GLuint groups, GLuint groupsY) {
     setTraceUniform(ubo, 1, stage);
     glBindImageTexture(gpu::CONE_IMAGE_OUTPUT, image, 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
-    glDispatchCompute(groupCount(w, gpu::CONE_LOCAL_SIZE), groupCount(h, gpu::CONE_LOCAL_SIZE), 1);
+    glDispatchCompute(groups, groupsY, 1);
     glMemoryBarrier(kPixelPassWritten);
+}
+
+// One stage over w x h invocations in CONE_LOCAL_SIZE tiles.
+void dispatchStage(GLuint ubo, GLint stage, GLuint image, GLenum format, int w, int h) {
+    dispatchStageGroups(ubo, stage, image, format, groupCount(w, gpu::CONE_LOCAL_SIZE),
+                        groupCount(h, gpu::CONE_LOCAL_SIZE));
 }
 
 // The own stage over the pixels the resolve listed. Their count comes back to the CPU (four
@@ -115,16 +121,13 @@ void dispatchStage(GLuint ubo, GLint stage, GLuint image, GLenum format, int w, 
 void dispatchOwnStage(GLuint ubo, GLuint list, GLuint image, GLenum format) {
     GLuint listed = 0;
     glGetNamedBufferSubData(list, 0, sizeof(listed), &listed);
-    if (listed == 0) return;
-    setTraceUniform(ubo, 1, gpu::CONE_STAGE_OWN);
-    glBindImageTexture(gpu::CONE_IMAGE_OUTPUT, image, 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
     const GLuint perGroup = GLuint(gpu::CONE_LOCAL_SIZE * gpu::CONE_LOCAL_SIZE);
     const GLuint maxGroups = 65535;  // the GL minimum of GL_MAX_COMPUTE_WORK_GROUP_COUNT
     for (GLuint base = 0; base < listed; base += maxGroups * perGroup) {
         setTraceUniform(ubo, 2, GLint(base));
-        glDispatchCompute(std::min(maxGroups, (listed - base + perGroup - 1) / perGroup), 1, 1);
+        dispatchStageGroups(ubo, gpu::CONE_STAGE_OWN, image, format,
+                            std::min(maxGroups, (listed - base + perGroup - 1) / perGroup), 1);
     }
-    glMemoryBarrier(kPixelPassWritten);
 }
 
 }  // namespace

@@ -17,9 +17,9 @@ namespace vct {
 
 // AO in [0, 1] per pixel (GL_R32F, view size; sky pixels 1): cones over the hemisphere of the
 // shading normal, weighted to integrate the cosine lobe, each limited to distance `radius`
-// (world units: the AO radius R, beyond which nothing occludes). Reads grid.opacity (and, when settings.anisotropic, the
-// directional levels the grid has: an AO grid's anisoOpacity, or a lit grid's
-// anisoRadiance alpha). Timer scope "cone_ao".
+// (world units: the AO radius R, beyond which nothing occludes). Reads grid.opacity (and,
+// when settings.anisotropic, the directional levels the grid has: an AO grid's anisoOpacity,
+// or a lit grid's anisoRadiance alpha). Timer scope "cone_ao".
 GlTexture coneTraceAO(const VoxelGrid& grid, const GBuffer& gbuffer, const View& view, float radius,
                       const ConeSettings& settings, PassTimer& timer, ConeCost* cost = nullptr);
 

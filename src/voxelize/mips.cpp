@@ -93,8 +93,8 @@ void buildAnisotropicMips(VoxelGrid& grid, const AnisoPrograms& programs, bool d
     for (GlTexture& t : lit) t.reset();
     grid.anisoOpacity.reset();
     const int textures = packed ? 1 : 6;
-    for (int d = 0; d < textures; ++d)
-        (packed ? grid.anisoOpacity : lit[size_t(d)]) = createTexture3D(anisoFormat, base.x, base.y, base.z, anisoLevels);
+    auto target = [&](int d) -> GlTexture& { return packed ? grid.anisoOpacity : lit[size_t(d)]; };
+    for (int d = 0; d < textures; ++d) target(d) = createTexture3D(anisoFormat, base.x, base.y, base.z, anisoLevels);
     const GLuint baseTexture = packed ? grid.opacity.id() : grid.radiance.id();
     for (int level = 0; level < anisoLevels; ++level) {
         const GLuint p = level == 0 ? programs.first : programs.rest;
@@ -104,7 +104,7 @@ void buildAnisotropicMips(VoxelGrid& grid, const AnisoPrograms& programs, bool d
         setUniform(p, "uSrcSize", src);
         setUniform(p, "uDstSize", dst);
         for (int d = 0; d < textures; ++d) {
-            const GlTexture& out = packed ? grid.anisoOpacity : lit[size_t(d)];
+            const GlTexture& out = target(d);
             setUniform(p, "uAxis", packed ? 0 : d / 2);
             setUniform(p, "uSign", d % 2 == 0 ? 1 : -1);
             setUniform(p, "uDepthIn", depthLevels && level > 0 ? 1 : 0);
