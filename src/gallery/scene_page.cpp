@@ -54,9 +54,12 @@ std::string viewerSection(const SiteCase& c, const SiteImage* a, const SiteImage
     const SiteImage* err = nullptr;
     if (b && !b->errorId.empty()) err = c.image(b->errorId);
     std::ostringstream s;
+    // decoding="sync": a state change (a new A or B, a followed link) paints the new image in the
+    // frame that shows it, never the previous one or an empty layer while a decoder thread runs.
     auto img = [&](const char* id, const SiteImage* im, const char* alt) {
         s << "<img class=\"px\" id=\"" << id << "\" src=\"" << (im ? encodeUrlPath(im->src) : "")
-          << "\" width=\"" << W << "\" height=\"" << H << "\" alt=\"" << alt << "\" draggable=\"false\">";
+          << "\" width=\"" << W << "\" height=\"" << H << "\" alt=\"" << alt
+          << "\" decoding=\"sync\" draggable=\"false\">";
     };
     s << "<section class=\"compare\" id=\"compare\">\n<h2>Compare</h2>\n<div class=\"controls\">\n"
       << "<label>A (left) " << imageSelect(c, "sel-a", a ? a->id : "") << "</label>\n"
@@ -86,7 +89,7 @@ std::string viewerSection(const SiteCase& c, const SiteImage* a, const SiteImage
     if (!c.roiOutline.empty()) {
         s << "<div class=\"layer overlay roi-layer\" hidden><img class=\"px\" src=\""
           << encodeUrlPath(c.roiOutline) << "\" width=\"" << W << "\" height=\"" << H
-          << "\" alt=\"ROI outline\" draggable=\"false\"></div>\n";
+          << "\" alt=\"ROI outline\" decoding=\"sync\" draggable=\"false\"></div>\n";
     }
     s << "<div class=\"split\" id=\"split\"><div class=\"knob\"></div></div>\n"
       << "<span class=\"tag tag-a\" id=\"tag-a\">" << (a ? escapeHtml(a->label) : "") << "</span>"
@@ -101,7 +104,7 @@ std::string viewerSection(const SiteCase& c, const SiteImage* a, const SiteImage
     if (!c.roiOutline.empty())
         s << "<div class=\"layer overlay roi-layer\" hidden><img class=\"px\" src=\""
           << encodeUrlPath(c.roiOutline) << "\" width=\"" << W << "\" height=\"" << H
-          << "\" alt=\"ROI outline\" draggable=\"false\"></div>\n";
+          << "\" alt=\"ROI outline\" decoding=\"sync\" draggable=\"false\"></div>\n";
     s << "<span class=\"tag tag-a\" id=\"err-title\">" << (err ? escapeHtml(err->label) : "no error map")
       << "</span>\n"
       << "</div>\n<figcaption><div class=\"legend\"><img src=\"" << encodeUrlPath(c.legend)

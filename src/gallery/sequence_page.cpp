@@ -53,7 +53,7 @@ double pathFps(const nlohmann::json& results) {
 }
 
 // One <img> per frame, all but the current one hidden: the browser loads every frame once, so
-// playback never waits on the disk.
+// playback never waits on the disk; decoding="sync" so a shown frame is never a stale one.
 std::string frameStack(const std::vector<std::string>& frames, int W, int H, const std::string& alt) {
     std::ostringstream s;
     s << "<div class=\"seq-stack\" style=\"aspect-ratio: " << std::max(1, W) << " / " << std::max(1, H)
@@ -61,7 +61,7 @@ std::string frameStack(const std::vector<std::string>& frames, int W, int H, con
     for (size_t f = 0; f < frames.size(); ++f)
         s << "<img class=\"px\" src=\"" << encodeUrlPath(frames[f]) << "\" width=\"" << W << "\" height=\""
           << H << "\" alt=\"" << escapeHtml(alt) << ", frame " << f << "\" data-frame=\"" << f << "\""
-          << (f ? " hidden" : "") << ">";
+          << (f ? " hidden" : "") << " decoding=\"sync\">";
     s << "</div>";
     return s.str();
 }
