@@ -2,10 +2,12 @@
 // each cone limited to distance R; A = 1 - sum_c w_c alpha_c (CONE_AO_LINEAR), which
 // estimates the reference's A_R. Sky pixels read 1. Dense grid, or (CONE_CLIPMAP) clipmap.
 #include "cone/cone_common.glsl"
+#ifndef CONE_RESOLVE_STAGE  // the resolve program reads no volume
 #ifdef CONE_CLIPMAP
 #include "cone/clipmap_march.glsl"
 #else
 #include "cone/cone_march.glsl"
+#endif
 #endif
 
 layout(local_size_x = CONE_LOCAL_SIZE, local_size_y = CONE_LOCAL_SIZE) in;
@@ -14,6 +16,7 @@ layout(r32f, binding = CONE_IMAGE_TRACED) uniform readonly image2D cone_aoTraced
 // Per pixel: (volume samples, texture fetches) of its cones; zero for sky and resolved pixels.
 layout(std430, binding = CONE_BINDING_COUNTS) buffer ConeCounts { vec2 cone_counts[]; };
 
+#ifndef CONE_RESOLVE_STAGE
 vec4 cone_passTrace(ivec2 pix, vec3 p, vec3 n, vec3 ng, out vec2 counts) {
     cone_jitterPixel(pix);
     cone_fetches = 0.0;
@@ -21,6 +24,7 @@ vec4 cone_passTrace(ivec2 pix, vec3 p, vec3 n, vec3 ng, out vec2 counts) {
     counts = vec2(g.samples, cone_fetches);
     return vec4(clamp(1.0 - g.occlusion, 0.0, 1.0), 0.0, 0.0, 0.0);
 }
+#endif
 vec4 cone_passFinish(ivec2 pix, vec4 traced) { return traced; }
 vec4 cone_passSky() { return vec4(1.0, 0.0, 0.0, 0.0); }
 vec4 cone_passTraced(ivec2 cell) { return vec4(imageLoad(cone_aoTraced, cell).r, 0.0, 0.0, 0.0); }

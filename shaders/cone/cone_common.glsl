@@ -4,8 +4,10 @@
 // cone_volumeLeaving, cone_volumeSample, cone_volumeFacing). Include this first: the shader
 // loader expands each file once.
 #include "cone/cone_shared.h"
+#ifndef CONE_RESOLVE_STAGE  // the resolve program (cone_resolve.glsl) marches no cones
 #include "cone/cone_march_shared.h"
 #include "common/tangent_frame.h"
+#endif
 
 layout(std140, binding = CONE_UBO_BINDING) uniform ConeBlock { ConeUniforms u; };
 
@@ -14,11 +16,6 @@ layout(binding = 0) uniform sampler2D gbufPosition;
 layout(binding = 1) uniform sampler2D gbufNormal;
 layout(binding = 2) uniform sampler2D gbufGeomNormal;
 layout(binding = 3) uniform sampler2D gbufAlbedo;
-
-// The march settings of the uniform block.
-ConeMarch cone_uniformMarch() {
-    return ConeMarch(u.march.x, u.march.y, u.march.w, u.limits.w, u.gridResolution.xyz);
-}
 
 // Reads the G-buffer texel; false for sky or unusable normals.
 bool cone_surface(ivec2 pix, out vec3 pWorld, out vec3 n, out vec3 ng) {
@@ -33,6 +30,12 @@ bool cone_surface(ivec2 pix, out vec3 pWorld, out vec3 n, out vec3 ng) {
     ng *= inversesqrt(lg);
     n = (ln > 1e-12 && !isnan(ln) && !isinf(ln)) ? n * inversesqrt(ln) : ng;
     return true;
+}
+
+#ifndef CONE_RESOLVE_STAGE
+// The march settings of the uniform block.
+ConeMarch cone_uniformMarch() {
+    return ConeMarch(u.march.x, u.march.y, u.march.w, u.limits.w, u.gridResolution.xyz);
 }
 
 // The cone set around shading normal n: sum_c w_c * (cone result) integrates the cosine lobe.
@@ -88,4 +91,4 @@ ConeGather cone_gatherVoxel(vec3 p, vec3 n, vec3 ng, float offset, float h0, flo
     }
     return g;
 }
-
+#endif

@@ -4,10 +4,12 @@
 // seen through what it left unoccluded. Sky pixels read 0. Dense grid, or (CONE_CLIPMAP)
 // clipmap.
 #include "cone/cone_common.glsl"
+#ifndef CONE_RESOLVE_STAGE  // the resolve program reads no volume
 #ifdef CONE_CLIPMAP
 #include "cone/clipmap_march.glsl"
 #else
 #include "cone/cone_march.glsl"
+#endif
 #endif
 
 layout(local_size_x = CONE_LOCAL_SIZE, local_size_y = CONE_LOCAL_SIZE) in;
@@ -18,6 +20,7 @@ layout(std430, binding = CONE_BINDING_COUNTS) buffer ConeCounts { vec2 cone_coun
 
 // The traced value is the light the cones gather (sum_c w_c L_c); the pixel's own albedo
 // multiplies it when it is finished, so a resolved pixel keeps its texture.
+#ifndef CONE_RESOLVE_STAGE
 vec4 cone_passTrace(ivec2 pix, vec3 p, vec3 n, vec3 ng, out vec2 counts) {
     cone_jitterPixel(pix);
     cone_fetches = 0.0;
@@ -25,6 +28,7 @@ vec4 cone_passTrace(ivec2 pix, vec3 p, vec3 n, vec3 ng, out vec2 counts) {
     counts = vec2(g.samples, cone_fetches);
     return vec4(g.radiance, 1.0);
 }
+#endif
 vec4 cone_passFinish(ivec2 pix, vec4 traced) {
     vec3 albedo = max(texelFetch(gbufAlbedo, pix, 0).rgb, vec3(0.0));
     return vec4(albedo * traced.rgb, 1.0);

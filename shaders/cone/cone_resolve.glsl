@@ -8,13 +8,16 @@
 //            (cone_resolveAgreement), over the sixteen nearest by agreement alone when the
 //            four share none, and lists the pixel for the own stage when no block does;
 //   own      (s > 1, when the resolve listed pixels) each listed pixel traces its own cones
-//            (CONE_STAGE_OWN, cone_shared.h, says why this is a stage). (Tracing also
+//            (CONE_STAGE_OWN, cone_shared.h, says why this is a stage).
+// The resolve is its own program (CONE_RESOLVE_STAGE defined: no cone march, no volume);
+// the trace program runs the trace and own stages. (Tracing also
 //            where the blocks disagree, at a crease's dark band, was tried: on the Cornell
 //            box it traced half the pixels at s = 4 and moved the error against the ray
 //            tracer by 0.001.)
 // The includer defines, before including this file:
 //   vec4 cone_passTrace(ivec2 pix, vec3 p, vec3 n, vec3 ng, out vec2 counts)
-//            the pixel's traced value (what the resolve interpolates) and (samples, fetches)
+//            the pixel's traced value (what the resolve interpolates) and (samples, fetches);
+//            not in the resolve program
 //   vec4 cone_passFinish(ivec2 pix, vec4 traced)   the output at pix from a traced value
 //   vec4 cone_passSky()                            the output of a pixel with no surface
 //   vec4 cone_passTraced(ivec2 cell)               the traced image at a block
@@ -32,6 +35,8 @@ layout(std430, binding = CONE_BINDING_OWN_LIST) buffer ConeOwnList {
 
 // The pixel that traces block `cell`: the block's centre, clamped to the image.
 ivec2 cone_tracedPixel(ivec2 cell, int s) { return min(cell * s + ivec2(s / 2), u.image.xy - 1); }
+
+#ifdef CONE_RESOLVE_STAGE
 
 // How well block `cell`'s traced pixel shares the surface of the point p (normal n): the
 // shading normals' agreement times the tangent-plane agreement (CONE_RESOLVE_*, cone_shared.h);
@@ -90,6 +95,10 @@ void cone_resolve(ivec2 q) {
     cone_passStore(q, cone_passFinish(q, sum / weight));
 }
 
+void main() { cone_resolve(ivec2(gl_GlobalInvocationID.xy)); }
+
+#else
+
 void cone_ownTrace(uint entry) {
     if (entry >= cone_ownCount) return;
     ivec2 q = cone_ownPixels[entry];
@@ -104,10 +113,6 @@ void cone_ownTrace(uint entry) {
 void main() {
     ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
     int s = max(u.trace.x, 1);
-    if (u.trace.y == CONE_STAGE_RESOLVE) {
-        cone_resolve(cell);
-        return;
-    }
     if (u.trace.y == CONE_STAGE_OWN) {
         cone_ownTrace(uint(u.trace.z) + gl_WorkGroupID.x * uint(CONE_LOCAL_SIZE * CONE_LOCAL_SIZE) +
                       gl_LocalInvocationIndex);
@@ -126,3 +131,5 @@ void main() {
     cone_counts[pix.y * u.image.x + pix.x] = counts;
     cone_passStore(cell, v);
 }
+
+#endif  // CONE_RESOLVE_STAGE

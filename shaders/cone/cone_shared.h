@@ -56,6 +56,9 @@ VCT_CONST int CONE_STAGE_RESOLVE = 1;
 // that holds a whole cone march costs a SIMD machine in every resolve invocation, even when
 // no lane takes it (llvmpipe, 512^2: the resolve took 90 ms with it, 60 ms without).
 VCT_CONST int CONE_STAGE_OWN = 2;
+// The resolve is a program of its own (CONE_RESOLVE_STAGE, coneResolveProgramKey), compiled
+// without the cone march: llvmpipe paid for the march's code in every resolve invocation
+// that never ran it (512^2: 60 ms in the trace stage's program, 15-22 ms in its own).
 // The own stage's list: (count, 3 pad, then ivec2 per pixel). Binding 7 is also the bounce's
 // voxel list; no program has both.
 VCT_CONST int CONE_BINDING_OWN_LIST = 7;

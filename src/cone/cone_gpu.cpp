@@ -155,8 +155,10 @@ GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlB
         glClearNamedBufferSubData(own.id(), GL_R32UI, 0, sizeof(GLuint), GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_OWN_LIST, own.id());
         glBindImageTexture(gpu::CONE_IMAGE_TRACED, traced.id(), 0, GL_FALSE, 0, GL_READ_ONLY, format);
+        glUseProgram(cachedProgram(coneResolveProgramKey(gi)));
         dispatchStage(ubo, gpu::CONE_STAGE_RESOLVE, out.id(), format, gbuffer.width, gbuffer.height);
         glBindImageTexture(gpu::CONE_IMAGE_TRACED, 0, 0, GL_FALSE, 0, GL_READ_ONLY, format);
+        glUseProgram(program);
         dispatchOwnStage(ubo, own.id(), out.id(), format);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_OWN_LIST, 0);
     }

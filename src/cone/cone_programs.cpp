@@ -23,6 +23,12 @@ ProgramKey clipmapConePassProgramKey(bool gi) {
                              {{"CONE_GI", gi ? "1" : "0"}, {"CONE_CLIPMAP", "1"}});
 }
 
+ProgramKey coneResolveProgramKey(bool gi) {
+    ShaderDefines d = coneDefines(gi, false);
+    d.push_back({"CONE_RESOLVE_STAGE", "1"});
+    return computeProgramKey(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl", d);
+}
+
 ProgramKey coneBounceProgramKey(bool aniso, GLenum radianceFormat, bool listPass) {
     ShaderDefines d = coneDefines(true, aniso);
     d.push_back({"RADIANCE_FORMAT", glslImageFormat(radianceFormat)});
@@ -56,6 +62,7 @@ std::vector<ProgramKey> coneProgramVariants() {
             v.push_back(coneCountProgramKey(gi, d));
         }
         v.push_back(clipmapConePassProgramKey(gi));
+        v.push_back(coneResolveProgramKey(gi));
     }
     for (bool aniso : {false, true})
         for (GLenum f : {GLenum(GL_RGBA16F), GLenum(GL_RGBA32F)})

@@ -16,6 +16,9 @@ enum class ConeDirectional { None, Six, Packed };
 ProgramKey conePassProgramKey(bool gi, ConeDirectional directional);
 // The same over a clipmap's levels (isotropic).
 ProgramKey clipmapConePassProgramKey(bool gi);
+// The resolve stage of a reduced-resolution AO or GI pass (cone_resolve.glsl): one program
+// for every volume, since it marches no cones and reads none.
+ProgramKey coneResolveProgramKey(bool gi);
 // cone_bounce.glsl: the gather of one bounce, or (listPass) the list of voxels that gather.
 ProgramKey coneBounceProgramKey(bool aniso, GLenum radianceFormat, bool listPass);
 // cone_raymarch.glsl: the voxel_* views; channel is gpu::CONE_CHANNEL_*.
