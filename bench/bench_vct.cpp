@@ -142,7 +142,7 @@ CountedPass countConeFetches(bool gi, const VoxelGrid& grid, const GBuffer& gbuf
     const float diagonal = glm::length(glm::vec3(grid.resolution)) * grid.voxelSize;
     conedetail::BoundConePass bound =
         conedetail::bindConePass(gi, grid, gbuffer, gi ? 2.f * diagonal : radius, sky, readConeSettings(params));
-    const GLuint program = cachedProgram(coneCountProgramKey(gi, bound.directional));
+    const GLuint program = cachedProgram(coneCountProgramKey(gi, bound.directional, bound.depthLevels));
     CountedPass out;
     GlTexture value = createTexture2D(GL_RGBA32F, gbuffer.width, gbuffer.height);
     out.counts = createTexture2D(GL_R32UI, gbuffer.width, gbuffer.height);

@@ -49,12 +49,14 @@ r ao_vct_16 $overhang --ao vct --radius 1 --aov ao --voxel-res 64 --param vct.co
 r ao_vct_clipmap $overhang --ao vct --radius 1 --aov ao --voxel-res 32 --param vct.clipmap.levels=3
 r ao_vct_ts4 $overhang --ao vct --radius 1 --aov ao --voxel-res 64 --param vct.trace-scale=4
 r ao_vct_clipmap_ts2 $overhang --ao vct --radius 1 --aov ao --voxel-res 32 --param vct.clipmap.levels=3 --param vct.trace-scale=2
+r ao_vct_depth $overhang --ao vct --radius 1 --aov ao --voxel-res 64 --param vct.opacity=depth
 r ao_vct_vdb $overhang --ao vct --radius 1 --aov ao --voxel-res 64 --backend vdb
 r ao_reference $overhang --ao reference --radius 1 --aov ao,ao_stderr --spp 16
 r gi_vct $cornell --gi vct --aov beauty,indirect,direct --voxel-res 32
 r gi_vct_ao $cornell --gi vct --ao vct --aov beauty,ao,indirect --voxel-res 32
 r gi_vct_nobounce $cornell --gi vct --aov indirect --voxel-res 32 --param vct.bounces=0
 r gi_vct_ts2 $cornell --gi vct --aov beauty,indirect --voxel-res 32 --param vct.trace-scale=2
+r gi_vct_depth $cornell --gi vct --aov indirect --voxel-res 32 --param vct.opacity=depth
 r gi_vct_iso $cornell --gi vct --aov indirect --voxel-res 32 --param vct.aniso=0
 r gi_vct_clipmap $cornell --gi vct --aov indirect --voxel-res 32 --param vct.clipmap.levels=2 --param vct.bounces=0
 r gi_vct_vdb $cornell --gi vct --aov indirect --voxel-res 32 --backend vdb

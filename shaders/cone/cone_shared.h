@@ -122,7 +122,7 @@ struct ConeUniforms {
     vec4 limits;           // x = max distance (voxels), y = sky radiance, z = falloff lambda (1/voxels),
                            // w = plane-limit ratio (0 = off)
     vec4 camera;           // x = tan(yfov / 2) * aspect, y = tan(yfov / 2), z = ray step (voxels),
-                           // w = 1: the directional levels hold optical depth (opacity_depth.h)
+                           // w unused (optical-depth levels are the CONE_DEPTH_LEVELS variant)
     ivec4 config;          // x = cone count, y = AO mapping, z = mip level (rayMarch), w = channel (rayMarch)
     ivec4 image;           // x = width, y = height, z = cone jitter (1: rotate per pixel), w = its seed
     ivec4 trace;           // pixel passes: x = trace scale (vct.trace-scale), y = stage (CONE_STAGE_*),

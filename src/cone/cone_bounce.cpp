@@ -92,12 +92,13 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
         // The mips (and the directional textures, rebuilt anew) of the previous total.
         buildMips(grid, cone.anisotropic, mipsTimer, "bounce_mips", wantsDepthLevels(cone));
         ubo = bindConeUniforms(coneUniforms(true, grid, 2.f * diagonal, bounceSky ? sky : 0.f, cone));
-        const bool aniso = bindGridTextures(true, grid, cone) != ConeDirectional::None;
+        const ConeDirectional directional = bindGridTextures(true, grid, cone);
+        const bool aniso = directional != ConeDirectional::None, depth = readsDepthLevels(grid, directional);
         glBindTextureUnit(gpu::CONE_UNIT_BOUNCE_DIRECT, direct.id());
         glBindTextureUnit(gpu::CONE_UNIT_BOUNCE_ALBEDO, grid.albedo.id());
         if (i == 0) {
             // Listed once: direct light and normals do not change.
-            const GLuint listPass = cachedProgram(coneBounceProgramKey(aniso, format, true));
+            const GLuint listPass = cachedProgram(coneBounceProgramKey(aniso, format, true, depth));
             glUseProgram(listPass);
             const int g = gpu::VOX_GRID_GROUP;
             for (Slab& slab : slabs) {
@@ -112,7 +113,7 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
         glCopyImageSubData(direct.id(), GL_TEXTURE_3D, 0, 0, 0, 0, next.id(), GL_TEXTURE_3D, 0, 0, 0, 0, res.x, res.y,
                            res.z);
         bindImage3D(gpu::CONE_IMAGE_OUTPUT, next.id(), 0, GL_WRITE_ONLY, format);
-        glUseProgram(cachedProgram(coneBounceProgramKey(aniso, format, false)));
+        glUseProgram(cachedProgram(coneBounceProgramKey(aniso, format, false, depth)));
         for (const Slab& slab : slabs) {
             if (slab.listed == 0) continue;
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_VOXEL_LIST, slab.list.id());

@@ -59,13 +59,16 @@ gpu::ConeUniforms coneUniforms(bool gi, const VoxelGrid& grid, float maxDistWorl
     const std::vector<glm::vec4>& cones = lanes.cones;
     u.config = glm::ivec4(int(cones.size()), gi ? gpu::CONE_AO_LINEAR : int(settings.aoMapping), 0, 0);
     for (size_t i = 0; i < cones.size(); ++i) u.cones[i] = cones[i];
-    u.camera.w = grid.depthLevels && directionalLevels(gi, grid, settings) != ConeDirectional::None ? 1.f : 0.f;
     u.trace = glm::ivec4(settings.traceScale, gpu::CONE_STAGE_TRACE, 0, 0);
     return u;
 }
 
 glm::ivec4 conePixelImage(const GBuffer& gbuffer, const ConeSettings& settings) {
     return glm::ivec4(gbuffer.width, gbuffer.height, settings.jitter ? 1 : 0, int(settings.seed));
+}
+
+bool readsDepthLevels(const VoxelGrid& grid, ConeDirectional directional) {
+    return grid.depthLevels && directional != ConeDirectional::None;
 }
 
 ConeDirectional bindGridTextures(bool gi, const VoxelGrid& grid, const ConeSettings& settings) {
@@ -86,6 +89,7 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
     bound.ubo = bindConeUniforms(u);
     bindGBufferTextures(gbuffer);  // the shaders texelFetch position, normal, geomNormal, albedo
     bound.directional = bindGridTextures(gi, grid, settings);
+    bound.depthLevels = readsDepthLevels(grid, bound.directional);
     return bound;
 }
 

@@ -38,13 +38,18 @@ glm::ivec4 conePixelImage(const GBuffer& gbuffer, const ConeSettings& settings);
 // bound (the variant of the pass's program: an AO pass over an AO grid samples its packed
 // opacity, over a lit grid the six RGBA textures' alpha).
 ConeDirectional bindGridTextures(bool gi, const VoxelGrid& grid, const ConeSettings& settings);
+// Whether a pass reading `directional` levels of `grid` reads optical depth (the programs'
+// CONE_DEPTH_LEVELS variant): the grid's directional levels hold it and the pass reads them.
+bool readsDepthLevels(const VoxelGrid& grid, ConeDirectional directional);
 
 // One cone pass bound and ready for its program's dispatch: uniforms uploaded and bound,
 // the G-buffer, the grid's textures (opacity or radiance, directional mips, normals for
-// GI's facing test) on their units. `directional`: the directional levels bound.
+// GI's facing test) on their units. `directional`: the directional levels bound;
+// `depthLevels`: whether they hold optical depth (readsDepthLevels).
 struct BoundConePass {
     GlBuffer ubo;
     ConeDirectional directional = ConeDirectional::None;
+    bool depthLevels = false;
 };
 BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffer, float maxDistWorld, float sky,
                            const ConeSettings& settings);

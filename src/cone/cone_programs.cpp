@@ -7,15 +7,16 @@ namespace vct {
 
 namespace {
 ShaderDefines coneDefines(bool gi, bool aniso) { return {{"CONE_GI", gi ? "1" : "0"}, {"CONE_ANISO", aniso ? "1" : "0"}}; }
-ShaderDefines coneDefines(bool gi, ConeDirectional directional) {
+ShaderDefines coneDefines(bool gi, ConeDirectional directional, bool depthLevels) {
     ShaderDefines d = coneDefines(gi, directional != ConeDirectional::None);
     if (directional == ConeDirectional::Packed) d.push_back({"CONE_ANISO_PACKED", "1"});
+    if (depthLevels && directional != ConeDirectional::None) d.push_back({"CONE_DEPTH_LEVELS", "1"});
     return d;
 }
 }  // namespace
 
-ProgramKey conePassProgramKey(bool gi, ConeDirectional directional) {
-    return computeProgramKey(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl", coneDefines(gi, directional));
+ProgramKey conePassProgramKey(bool gi, ConeDirectional directional, bool depthLevels) {
+    return computeProgramKey(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl", coneDefines(gi, directional, depthLevels));
 }
 
 ProgramKey clipmapConePassProgramKey(bool gi) {
@@ -29,8 +30,10 @@ ProgramKey coneResolveProgramKey(bool gi) {
     return computeProgramKey(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl", d);
 }
 
-ProgramKey coneBounceProgramKey(bool aniso, GLenum radianceFormat, bool listPass) {
-    ShaderDefines d = coneDefines(true, aniso);
+ProgramKey coneBounceProgramKey(bool aniso, GLenum radianceFormat, bool listPass, bool depthLevels) {
+    // The list pass marches no cones: one variant whatever the levels hold.
+    ShaderDefines d =
+        coneDefines(true, aniso ? ConeDirectional::Six : ConeDirectional::None, depthLevels && !listPass);
     d.push_back({"RADIANCE_FORMAT", glslImageFormat(radianceFormat)});
     d.push_back({"RADIANCE_FORMAT_MAX", formatMaxLiteral(radianceFormat)});
     if (listPass) d.push_back({"BOUNCE_LIST", "1"});
@@ -45,8 +48,8 @@ ProgramKey voxelViewProgramKey(int channel) {
     return computeProgramKey("cone/cone_raymarch.glsl", d);
 }
 
-ProgramKey coneCountProgramKey(bool gi, ConeDirectional directional) {
-    return computeProgramKey("bench/cone_count.glsl", coneDefines(gi, directional));
+ProgramKey coneCountProgramKey(bool gi, ConeDirectional directional, bool depthLevels) {
+    return computeProgramKey("bench/cone_count.glsl", coneDefines(gi, directional, depthLevels));
 }
 
 ProgramKey fetchBenchProgramKey() { return computeProgramKey("bench/fetch.glsl"); }
@@ -58,15 +61,20 @@ std::vector<ProgramKey> coneProgramVariants() {
     for (bool gi : {false, true}) {
         for (ConeDirectional d : {ConeDirectional::None, ConeDirectional::Six, ConeDirectional::Packed}) {
             if (gi && d == ConeDirectional::Packed) continue;  // a lit grid has its six
-            v.push_back(conePassProgramKey(gi, d));
-            v.push_back(coneCountProgramKey(gi, d));
+            for (bool depth : {false, true}) {
+                if (depth && d == ConeDirectional::None) continue;  // depth lives in directional levels
+                v.push_back(conePassProgramKey(gi, d, depth));
+                v.push_back(coneCountProgramKey(gi, d, depth));
+            }
         }
         v.push_back(clipmapConePassProgramKey(gi));
         v.push_back(coneResolveProgramKey(gi));
     }
     for (bool aniso : {false, true})
         for (GLenum f : {GLenum(GL_RGBA16F), GLenum(GL_RGBA32F)})
-            for (bool list : {false, true}) v.push_back(coneBounceProgramKey(aniso, f, list));
+            for (bool list : {false, true})
+                for (bool depth : {false, true})
+                    if (!(depth && (list || !aniso))) v.push_back(coneBounceProgramKey(aniso, f, list, depth));
     for (int c : {gpu::CONE_CHANNEL_OPACITY, gpu::CONE_CHANNEL_ALBEDO, gpu::CONE_CHANNEL_RADIANCE})
         v.push_back(voxelViewProgramKey(c));
     v.push_back(fetchBenchProgramKey());

@@ -12,19 +12,22 @@ namespace vct {
 // grid's six RGBA textures, or an AO grid's one texture of the three axes' opacity (AO only).
 enum class ConeDirectional { None, Six, Packed };
 
-// cone_ao.glsl / cone_gi.glsl over one dense grid, with its directional levels or without.
-ProgramKey conePassProgramKey(bool gi, ConeDirectional directional);
+// cone_ao.glsl / cone_gi.glsl over one dense grid, with its directional levels or without;
+// `depthLevels`: the directional levels hold optical depth (VoxelGrid::depthLevels; ignored
+// without directional levels).
+ProgramKey conePassProgramKey(bool gi, ConeDirectional directional, bool depthLevels);
 // The same over a clipmap's levels (isotropic).
 ProgramKey clipmapConePassProgramKey(bool gi);
 // The resolve stage of a reduced-resolution AO or GI pass (cone_resolve.glsl): one program
 // for every volume, since it marches no cones and reads none.
 ProgramKey coneResolveProgramKey(bool gi);
-// cone_bounce.glsl: the gather of one bounce, or (listPass) the list of voxels that gather.
-ProgramKey coneBounceProgramKey(bool aniso, GLenum radianceFormat, bool listPass);
+// cone_bounce.glsl: the gather of one bounce (`depthLevels` as above), or (listPass) the
+// list of voxels that gather.
+ProgramKey coneBounceProgramKey(bool aniso, GLenum radianceFormat, bool listPass, bool depthLevels);
 // cone_raymarch.glsl: the voxel_* views; channel is gpu::CONE_CHANNEL_*.
 ProgramKey voxelViewProgramKey(int channel);
 // bench/: the cone pass with a fetch counter, and the bare trilinear-fetch shader.
-ProgramKey coneCountProgramKey(bool gi, ConeDirectional directional);
+ProgramKey coneCountProgramKey(bool gi, ConeDirectional directional, bool depthLevels);
 ProgramKey fetchBenchProgramKey();
 // cone_march_check.glsl: the shared march's functions on a buffer of inputs (the test that
 // holds the CPU tracer's march to the shaders').

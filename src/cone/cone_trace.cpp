@@ -34,7 +34,7 @@ GlTexture tracePass(ConeMode mode, const VoxelGrid& grid, const GBuffer& gbuffer
                     const ConeSettings& settings, GlBuffer& counts) {
     const bool gi = mode == ConeMode::GI;
     BoundConePass bound = bindConePass(gi, grid, gbuffer, maxDistWorld, sky, settings);
-    return dispatchPixelPass(cachedProgram(conePassProgramKey(gi, bound.directional)), gi, gbuffer, counts, bound.ubo.id(),
+    return dispatchPixelPass(cachedProgram(conePassProgramKey(gi, bound.directional, bound.depthLevels)), gi, gbuffer, counts, bound.ubo.id(),
                              settings.traceScale);
 }
 
