@@ -160,7 +160,9 @@ GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlB
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_OWN_LIST, own.id());
         glBindImageTexture(gpu::CONE_IMAGE_TRACED, traced.id(), 0, GL_FALSE, 0, GL_READ_ONLY, format);
         glUseProgram(cachedProgram(coneResolveProgramKey(gi)));
-        dispatchStage(ubo, gpu::CONE_STAGE_RESOLVE, out.id(), format, gbuffer.width, gbuffer.height);
+        // One invocation per region of pixels that share their four nearest blocks
+        // (cone_resolve.glsl): the blocks and one more region on each axis.
+        dispatchStage(ubo, gpu::CONE_STAGE_RESOLVE, out.id(), format, tw + 1, th + 1);
         glBindImageTexture(gpu::CONE_IMAGE_TRACED, 0, 0, GL_FALSE, 0, GL_READ_ONLY, format);
         glUseProgram(program);
         dispatchOwnStage(ubo, own.id(), out.id(), format);
