@@ -1,4 +1,4 @@
-// The two stages every cone pixel pass runs (cone_ao.glsl, cone_gi.glsl; dense grid or
+// The stages every cone pixel pass runs (cone_ao.glsl, cone_gi.glsl; dense grid or
 // clipmap), with vct.trace-scale = s (ConeUniforms::trace.x):
 //   trace    one pixel per s x s block (cone_tracedPixel) marches its cones into the traced
 //            image at the block's coordinate; with s = 1 that is every pixel, finished, into
@@ -8,12 +8,12 @@
 //            (cone_resolveAgreement), over the sixteen nearest by agreement alone when the
 //            four share none, and lists the pixel for the own stage when no block does;
 //   own      (s > 1, when the resolve listed pixels) each listed pixel traces its own cones
-//            (CONE_STAGE_OWN, cone_shared.h, says why this is a stage).
-// The resolve is its own program (CONE_RESOLVE_STAGE defined: no cone march, no volume);
-// the trace program runs the trace and own stages. (Tracing also
+//            (CONE_STAGE_OWN, cone_shared.h, says why this is a stage). (Tracing also
 //            where the blocks disagree, at a crease's dark band, was tried: on the Cornell
 //            box it traced half the pixels at s = 4 and moved the error against the ray
 //            tracer by 0.001.)
+// The resolve is its own program (CONE_RESOLVE_STAGE defined: no cone march, no volume);
+// the trace program runs the trace and own stages.
 // The includer defines, before including this file:
 //   vec4 cone_passTrace(ivec2 pix, vec3 p, vec3 n, vec3 ng, out vec2 counts)
 //            the pixel's traced value (what the resolve interpolates) and (samples, fetches);
@@ -65,20 +65,16 @@ float cone_resolveAgreement(ConeResolveBlock b, vec3 p, vec3 n) {
     return wn * max(0.0, 1.0 - slope / CONE_RESOLVE_PLANE_SLOPE);
 }
 
-// Pixel q, whose four nearest blocks (c0 + (i, j), clamped to the image's blocks) are
-// near[i + 2 j].
-void cone_resolve(ivec2 q, ConeResolveBlock near[4]) {
+// Pixel q of region c0 (main), whose four nearest blocks (c0 + (i, j), clamped to the
+// image's `blocks`) are near[i + 2 j].
+void cone_resolve(ivec2 q, int s, ivec2 blocks, ivec2 c0, ConeResolveBlock near[4]) {
     vec3 p, n, ng;
     if (!cone_surface(q, p, n, ng)) {
         cone_passStore(q, cone_passSky());
         return;
     }
-    int s = max(u.trace.x, 1);
-    ivec2 blocks = (u.image.xy + s - 1) / s;
-    // Block coordinates of q: block c's traced pixel sits at c exactly.
-    vec2 x = (vec2(q) - float(s / 2)) / float(s);
-    ivec2 c0 = ivec2(floor(x));
-    vec2 f = x - vec2(c0);
+    // Block coordinates of q (block c's traced pixel sits at c exactly): c0 + f, f in [0, 1).
+    vec2 f = (vec2(q) - float(s / 2)) / float(s) - vec2(c0);
     vec4 sum = vec4(0.0);
     float weight = 0.0;
     for (int j = 0; j < 2; ++j)
@@ -131,7 +127,7 @@ void main() {
         for (int x = 0; x < s; ++x) {
             ivec2 q = first + ivec2(x, y);
             if (any(lessThan(q, ivec2(0))) || q.x >= u.image.x || q.y >= u.image.y) continue;
-            cone_resolve(q, near);
+            cone_resolve(q, s, blocks, c0, near);
         }
 }
 

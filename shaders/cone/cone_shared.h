@@ -46,9 +46,9 @@ VCT_CONST int CONE_BOUNCE_GROUP = 64;       // cone_bounce.glsl: invocations per
 // of one pixel per s x s block (cone_tracedPixel) into a traced image of ceil(size / s); the
 // resolve stage (cone_resolve.glsl) gives every surface pixel the traced values of its nearest
 // blocks weighted bilinearly and by how well each block's pixel shares its surface (normal and
-// tangent plane), and traces the pixel itself when none does. Engines ship VCT this way: the
-// cone pass costs about 1 / s^2 of a full-resolution one, and what it gathers varies over
-// distances of voxels and R, not pixels.
+// tangent plane), and lists the pixel for the own stage when none does. Engines ship VCT this
+// way: the cone pass costs about 1 / s^2 of a full-resolution one, and what it gathers varies
+// over distances of voxels and R, not pixels.
 VCT_CONST int CONE_STAGE_TRACE = 0;
 VCT_CONST int CONE_STAGE_RESOLVE = 1;
 // The pixels the resolve found no block for trace their own cones in a third stage, over the

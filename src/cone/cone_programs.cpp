@@ -73,7 +73,7 @@ std::vector<ProgramKey> coneProgramVariants() {
     for (bool aniso : {false, true})
         for (GLenum f : {GLenum(GL_RGBA16F), GLenum(GL_RGBA32F)})
             for (bool list : {false, true})
-                for (bool depth : {false, true})
+                for (bool depth : {false, true})  // the key ignores depth for the list and without aniso
                     if (!(depth && (list || !aniso))) v.push_back(coneBounceProgramKey(aniso, f, list, depth));
     for (int c : {gpu::CONE_CHANNEL_OPACITY, gpu::CONE_CHANNEL_ALBEDO, gpu::CONE_CHANNEL_RADIANCE})
         v.push_back(voxelViewProgramKey(c));
