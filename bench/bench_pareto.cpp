@@ -1,8 +1,9 @@
 // Error against cost for VCT's variants, the ray-traced reference at 1..128 spp and the
 // denoised ray tracers, measured in one run on one machine: AO at 512^2 and GI at 256^2 on
 // the Cornell box, Sponza (when present) and an off-screen scene. Prints, per case, every
-// point with frame_ms (what the next frame of the static scene costs: core/timing.h) and
-// time_ms (cold: voxels and the BVH built anew), the Pareto fronts of both, and for each VCT
+// point with frame_ms (what the next frame of the static scene, its camera moved, costs:
+// core/timing.h; the G-buffer counts, and so do voxels fitted to the view) and time_ms (cold:
+// G-buffer, voxels and the BVH built anew), the Pareto fronts of both, and for each VCT
 // variant the reference's cost at the same error, interpolated on its own error-cost curve
 // (error ~ 1 / sqrt(spp) between measured points): the equal-error ratio of frame_ms and of
 // time_ms.
@@ -11,7 +12,13 @@
 //                [--voxel-res N] [--case NAME]...   (cornell-ao, cornell-gi, sponza-ao,
 //                sponza-gi, overhang-ao, emitter-gi; default all)
 //                [--vct "KEY=VALUE ..."]...   VCT variants to measure instead of the default
-//                six (each a space-separated list of --param settings; "" is the defaults)
+//                ones (each a space-separated list of --param settings; "" is the defaults)
+//                [--passes]   also print each point's median time per pass
+//
+// AO alone fits its voxels to the visible points by default (vct.region=auto), and on Sponza
+// and the off-screen scene that region follows the camera, so the next frame voxelizes again
+// and frame_ms counts it; the vct.region=scene variants keep one grid over the scene for
+// every frame (GI's region is the scene already: those variants run for AO only).
 //
 // The truth is the reference at --truth-spp (256) with another seed than the points', so a
 // point's error is its own noise and bias, not shared samples. Sponza: the view of
@@ -50,6 +57,7 @@ struct Case {
 struct Point {
     std::string label;
     bool reference = false;  // a point of the reference's curve
+    std::string passes;      // "name ms, ..." (median per pass)
     int spp = 0;
     double rmse = 0.0, frameMs = 0.0, timeMs = 0.0;
     bool frontFrame = false, frontTime = false;
@@ -94,8 +102,18 @@ int main(int argc, char** argv) {
     std::vector<std::string> only;
     using Settings = std::vector<std::pair<std::string, std::string>>;
     std::vector<std::pair<std::string, Settings>> vctVariants;
-    for (int i = 1; i + 1 < argc; i += 2) {
+    bool printPasses = false;
+    for (int i = 1; i < argc; i += 2) {
         const std::string a = argv[i];
+        if (a == "--passes") {
+            printPasses = true;
+            --i;  // a flag: no value follows
+            continue;
+        }
+        if (i + 1 >= argc) {
+            std::cerr << "bench_pareto: " << a << " needs a value\n";
+            return 2;
+        }
         if (a == "--ao-size") aoSize = std::atoi(argv[i + 1]);
         else if (a == "--gi-size") giSize = std::atoi(argv[i + 1]);
         else if (a == "--truth-spp") truthSpp = std::atoi(argv[i + 1]);
@@ -126,9 +144,10 @@ int main(int argc, char** argv) {
         vctVariants = {{"vct", {}},
                        {"vct trace-scale=2", {{"vct.trace-scale", "2"}}},
                        {"vct trace-scale=4", {{"vct.trace-scale", "4"}}},
-                       {"vct cones=16", {{"vct.cones", "16"}}},
-                       {"vct cones=16 trace-scale=2", {{"vct.cones", "16"}, {"vct.trace-scale", "2"}}},
-                       {"vct cones=16 trace-scale=4", {{"vct.cones", "16"}, {"vct.trace-scale", "4"}}}};
+                       {"vct cones=16 trace-scale=4", {{"vct.cones", "16"}, {"vct.trace-scale", "4"}}},
+                       {"vct region=scene trace-scale=4", {{"vct.region", "scene"}, {"vct.trace-scale", "4"}}},
+                       {"vct region=scene cones=16 trace-scale=4",
+                        {{"vct.region", "scene"}, {"vct.cones", "16"}, {"vct.trace-scale", "4"}}}};
     if (aoSize < 8 || giSize < 8 || truthSpp < 1 || maxSpp < 1 || runs < 1 || voxelRes < 8) {
         std::cerr << "bench_pareto: sizes >= 8, spp and runs >= 1\n";
         return 2;
@@ -174,11 +193,13 @@ int main(int argc, char** argv) {
             (c.gi ? r.gi : r.ao) = method;
             r.spp = spp;
             r.seed = seed;
-            r.aovs = {aov, "depth"};
+            r.aovs = {aov};  // the estimate alone: another AOV (depth) would draw a G-buffer the method may not need
             return r;
         };
-        // The truth: another seed than every point's (they use 0).
-        const RenderResult truthRun = session.render(request("reference", truthSpp, 7919));
+        // The truth: another seed than every point's (they use 0); its depth masks the sky.
+        RenderRequest truthRequest = request("reference", truthSpp, 7919);
+        truthRequest.aovs.push_back("depth");
+        const RenderResult truthRun = session.render(truthRequest);
         const Image& truth = truthRun.aovs.at(aov);
         const Image valid = validMaskFromDepth(truthRun.aovs.at("depth"));
 
@@ -193,6 +214,10 @@ int main(int argc, char** argv) {
             variants.push_back({denoised + " " + std::to_string(spp) + " spp", r});
         }
         for (const auto& [label, params] : vctVariants) {
+            const bool sceneRegion =
+                std::find(params.begin(), params.end(), std::make_pair(std::string("vct.region"), std::string("scene"))) !=
+                params.end();
+            if (c.gi && sceneRegion && vctVariants.size() > 1) continue;  // GI's region is the scene already
             RenderRequest r = request("vct", 1, 0);
             for (const auto& [k, v] : params) r.params.set(k, v);
             variants.push_back({label, r});
@@ -203,12 +228,14 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "%s: %s\n", c.name.c_str(), label.c_str());
             const RenderResult first = session.render(req);  // warm-up; its image is the one scored
             std::vector<double> totals, frames;
+            std::map<std::string, std::vector<double>> passTimes;
             for (int run = 0; run < runs; ++run) {
                 RenderRequest timed = req;
                 timed.reuseSceneData = false;  // its own voxels or BVH count in its cold time
                 const RenderResult r = session.render(timed);
                 totals.push_back(r.totalMs);
                 frames.push_back(r.frameMs);
+                for (const PassTiming& t : r.passes) passTimes[t.name].push_back(t.wallMs);
             }
             Point p;
             p.label = label;
@@ -217,6 +244,11 @@ int main(int argc, char** argv) {
             p.rmse = computeErrorMetrics(first.aovs.at(aov), truth, &valid).rmse;
             p.frameMs = medianOf(frames);
             p.timeMs = medianOf(totals);
+            for (const auto& [name, t] : passTimes) {
+                char buf[64];
+                std::snprintf(buf, sizeof buf, "%s%s %.1f", p.passes.empty() ? "" : ", ", name.c_str(), medianOf(t));
+                p.passes += buf;
+            }
             points.push_back(p);
         }
         markFront(points, [](const Point& p) { return p.frameMs; }, &Point::frontFrame);
@@ -227,8 +259,11 @@ int main(int argc, char** argv) {
                     truthSpp);
         std::printf("%-30s %9s %11s %11s  %s\n", "point", "rmse", "frame_ms", "time_ms", "Pareto (frame, cold)");
         for (const Point& p : points)
+        {
             std::printf("%-30s %9.4f %11.1f %11.1f  %s %s\n", p.label.c_str(), p.rmse, p.frameMs, p.timeMs,
                         p.frontFrame ? "frame" : "     ", p.frontTime ? "cold" : "");
+            if (printPasses) std::printf("    passes (ms): %s\n", p.passes.c_str());
+        }
         std::vector<Point> curve;
         for (const Point& p : points)
             if (p.reference) curve.push_back(p);

@@ -12,14 +12,15 @@ namespace {
 void declareScreenSpacePasses(const ScreenSpaceAo& ao, const PlanContext& ctx, PassDeclarations& d) {
     const AoFilterSettings f = readAoFilterSettings(ctx.request.params, ao.noiseTile);
     ResourceId produced = kAoRaw;
-    d.add({kPassSsao, {kGBuffer}, {produced}, "screen-space AO estimator " + ao.name});
+    const ResourceId gbuffer = ao.readsAlbedo && ao.readsAlbedo(ctx.request.params) ? kGBuffer : kGBufferSurface;
+    d.add({kPassSsao, {gbuffer}, {produced}, "screen-space AO estimator " + ao.name});
     if (f.blur) {
-        d.add({kPassBlur, {kGBuffer, produced}, {kAoBlurred}, "edge-aware denoise"});
+        d.add({kPassBlur, {kGBufferSurface, produced}, {kAoBlurred}, "edge-aware denoise"});
         produced = kAoBlurred;
     } else {
         d.skip(kPassBlur, "--param blur=0");
     }
-    if (f.halfRes) d.add({kPassUpsample, {kGBuffer, produced}, {kAo}, "depth-aware upsample to full size"});
+    if (f.halfRes) d.add({kPassUpsample, {kGBufferSurface, produced}, {kAo}, "depth-aware upsample to full size"});
     else d.skip(kPassUpsample, "full-resolution AO (ao.half-res=0)");
     if (!f.halfRes) d.passes.back().writes = {kAo};
 }

@@ -35,6 +35,10 @@ struct ScreenSpaceAo {
     // values above 1 may be kept for it.
     std::function<GlTexture(const AoPassContext& ctx, const ParamMap& params, bool filtered)> evaluate;
     std::vector<ProgramKey> programs;  // the evaluation's programs
+    // Whether the evaluation reads the G-buffer's albedo with these parameters (GTAO's
+    // multi-bounce fit); empty: never. The others read the surface alone, so an AO-only
+    // render draws its G-buffer without materials.
+    std::function<bool(const ParamMap& params)> readsAlbedo;
 };
 
 // The Method of a screen-space estimator: passes ssao, blur, upsample.

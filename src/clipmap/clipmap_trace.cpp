@@ -20,12 +20,13 @@ static_assert(sizeof(gpu::ClipmapUniforms) == (gpu::CLIPMAP_MAX_LEVELS + 2) * 16
 
 namespace {
 
-void checkInputs(const Clipmap& cm, const GBuffer& g, const View& view, const std::string& pass) {
+void checkInputs(const Clipmap& cm, const GBuffer& g, const View& view, const std::string& pass, bool albedo) {
     if (cm.layout.levelCount < 1 || int(cm.levels.size()) != cm.layout.levelCount)
         throw InternalError(pass, "clipmap has no levels");
     for (const VoxelGrid& level : cm.levels) checkGrid(level, pass);
-    if (g.width <= 0 || g.height <= 0 || !g.position || !g.normal || !g.geomNormal || !g.albedo)
-        throw InternalError(pass, "G-buffer is incomplete (position, normal, geomNormal, albedo)");
+    if (g.width <= 0 || g.height <= 0 || !g.position || !g.normal || !g.geomNormal || (albedo && !g.albedo))
+        throw InternalError(pass, "G-buffer is incomplete (position, normal, geomNormal" +
+                                      std::string(albedo ? ", albedo)" : ")"));
     if (g.width != view.width || g.height != view.height)
         throw InternalError(pass, "G-buffer size does not match the view");
 }
@@ -66,7 +67,7 @@ GlTexture traceClipmap(bool gi, const Clipmap& cm, const GBuffer& gbuffer, float
 
 GlTexture coneTraceClipmapAO(const Clipmap& cm, const GBuffer& gbuffer, const View& view, float radius,
                              const ConeSettings& settings, PassTimer& timer, ConeCost* cost) {
-    checkInputs(cm, gbuffer, view, "coneTraceClipmapAO");
+    checkInputs(cm, gbuffer, view, "coneTraceClipmapAO", false);
     settings.validate();
     if (!(radius >= 0.f) || !std::isfinite(radius))
         throw InternalError("coneTraceClipmapAO", "radius " + std::to_string(radius) + " must be finite and >= 0");
@@ -77,7 +78,7 @@ GlTexture coneTraceClipmapAO(const Clipmap& cm, const GBuffer& gbuffer, const Vi
 
 GlTexture coneTraceClipmapGI(const Clipmap& cm, const GBuffer& gbuffer, const View& view, float sky,
                              const ConeSettings& settings, PassTimer& timer, ConeCost* cost) {
-    checkInputs(cm, gbuffer, view, "coneTraceClipmapGI");
+    checkInputs(cm, gbuffer, view, "coneTraceClipmapGI", true);
     settings.validate();
     for (const VoxelGrid& g : cm.levels)
         if (!g.radiance) throw InternalError("coneTraceClipmapGI", "clipmap has no radiance (inject first)");

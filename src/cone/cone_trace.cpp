@@ -20,9 +20,10 @@ namespace {
 
 enum class ConeMode { AO, GI };
 
-void checkGBuffer(const GBuffer& g, const View& view, const std::string& pass) {
-    if (g.width <= 0 || g.height <= 0 || !g.position || !g.normal || !g.geomNormal || !g.albedo)
-        throw InternalError(pass, "G-buffer is incomplete (position, normal, geomNormal, albedo)");
+void checkGBuffer(const GBuffer& g, const View& view, const std::string& pass, bool albedo) {
+    if (g.width <= 0 || g.height <= 0 || !g.position || !g.normal || !g.geomNormal || (albedo && !g.albedo))
+        throw InternalError(pass, albedo ? "G-buffer is incomplete (position, normal, geomNormal, albedo)"
+                                         : "G-buffer is incomplete (position, normal, geomNormal)");
     if (g.width != view.width || g.height != view.height)
         throw InternalError(pass, "G-buffer " + std::to_string(g.width) + "x" + std::to_string(g.height) +
                                       " does not match the view " + std::to_string(view.width) + "x" +
@@ -43,7 +44,7 @@ GlTexture tracePass(ConeMode mode, const VoxelGrid& grid, const GBuffer& gbuffer
 GlTexture coneTraceAO(const VoxelGrid& grid, const GBuffer& gbuffer, const View& view, float radius,
                       const ConeSettings& settings, PassTimer& timer, ConeCost* cost) {
     checkGrid(grid, "coneTraceAO");
-    checkGBuffer(gbuffer, view, "coneTraceAO");
+    checkGBuffer(gbuffer, view, "coneTraceAO", false);
     settings.validate();
     if (!(radius >= 0.f) || !std::isfinite(radius))
         throw InternalError("coneTraceAO", "radius " + std::to_string(radius) + " must be finite and >= 0");
@@ -55,7 +56,7 @@ GlTexture coneTraceAO(const VoxelGrid& grid, const GBuffer& gbuffer, const View&
 GlTexture coneTraceGI(const VoxelGrid& grid, const GBuffer& gbuffer, const View& view, float sky,
                       const ConeSettings& settings, PassTimer& timer, ConeCost* cost) {
     checkGrid(grid, "coneTraceGI");
-    checkGBuffer(gbuffer, view, "coneTraceGI");
+    checkGBuffer(gbuffer, view, "coneTraceGI", true);
     settings.validate();
     if (!grid.radiance) throw InternalError("coneTraceGI", "voxel grid has no radiance (inject first)");
     if (!(sky >= 0.f) || !std::isfinite(sky))

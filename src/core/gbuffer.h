@@ -21,6 +21,9 @@ struct GBuffer {
     GlTexture geomNormal;  // xyz world geometric normal, facing the camera; w = triangle id + 1 (as float)
     GlTexture albedo;      // rgb linear base colour (texture x factor); a = 1 on surface
     GlTexture emission;    // rgb linear emitted radiance
+    // false: the render reads no material (RenderPlan::gbufferMaterials), and albedo and
+    // emission are not drawn (null textures).
+    bool materials = true;
     GlTexture depth;       // GL_DEPTH_COMPONENT32F, reversed-Z (1 at near, 0 at infinity)
     GlFramebuffer fbo;
 };

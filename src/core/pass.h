@@ -34,6 +34,10 @@ inline constexpr PassId kPassComposite{"composite"};
 // method kGiIndirect; a method that lights the image itself (a path tracer) also writes
 // kBeauty and kDirect.
 inline constexpr ResourceId kGBuffer{"gbuffer"};
+// The G-buffer's surface alone (position, normals, depth): a pass that reads no albedo or
+// emission declares this, and a render whose passes all do draws no material
+// (RenderPlan::gbufferMaterials).
+inline constexpr ResourceId kGBufferSurface{"gbuffer_surface"};
 inline constexpr ResourceId kShadowMaps{"shadowmaps"};
 inline constexpr ResourceId kDirect{"direct"};
 inline constexpr ResourceId kAo{"ao"};
@@ -58,6 +62,7 @@ struct RenderPlan {
     std::vector<PassDecl> run;        // in declaration order, each with the reason it runs
     std::vector<SkippedPass> skipped; // every known pass that does not run, with the reason
     std::vector<std::string> notes;   // shader variants and other choices made from the scene
+    bool gbufferMaterials = true;     // a kept pass or a requested AOV reads the G-buffer's albedo or emission
     bool runs(PassId pass) const;
     std::vector<std::string> runNames() const;
 };

@@ -31,8 +31,10 @@ struct RenderRequest {
     float sky = 1.f;                         // uniform sky radiance
     ParamMap params;                         // --param KEY=VALUE
     bool prune = true;                       // false: run every applicable pass (for tests)
-    // false: build the scene's static data anew (voxels, the reference's BVH): times a
-    // method's whole, cold cost (compare's time_ms).
+    // false: build everything anew, as the first frame does: the scene's static data (voxels,
+    // the reference's BVH) and the view's G-buffer. Times a method's whole, cold cost
+    // (compare's time_ms), and its frame_ms includes the G-buffer a moved camera draws again
+    // (the reference pays for its primary rays the same way).
     bool reuseSceneData = true;
 };
 

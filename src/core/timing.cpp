@@ -12,7 +12,7 @@ double nowMs() {
 }
 
 PassTimer::Scope::Scope(PassTimer& timer, std::string name, bool gl, Reruns reruns)
-    : mTimer(timer), mName(std::move(name)), mGl(gl), mReruns(reruns) {
+    : mTimer(timer), mName(std::move(name)), mGl(gl), mReruns(timer.mViewDependent ? Reruns::EveryFrame : reruns) {
     if (mGl) {
         glFinish();
         if (mTimer.mGpuQueries) {

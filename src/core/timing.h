@@ -43,6 +43,21 @@ public:
     Scope scope(const std::string& name, bool gl = true, Reruns reruns = Reruns::EveryFrame) {
         return Scope(*this, name, gl, reruns);
     }
+    // While one is alive, passes that would rerun only when the scene changes count as per-frame:
+    // their inputs include the view after all (a voxel region fitted to the visible points is
+    // built anew whenever the camera moves).
+    class ViewDependent {
+    public:
+        ViewDependent(PassTimer& timer, bool dependent) : mTimer(timer), mWas(timer.mViewDependent) {
+            mTimer.mViewDependent = mWas || dependent;
+        }
+        ~ViewDependent() { mTimer.mViewDependent = mWas; }
+        ViewDependent(const ViewDependent&) = delete;
+        ViewDependent& operator=(const ViewDependent&) = delete;
+    private:
+        PassTimer& mTimer;
+        bool mWas;
+    };
     void add(PassTiming t) { mTimings.push_back(std::move(t)); }
     const std::vector<PassTiming>& timings() const { return mTimings; }
     double totalMs() const;
@@ -50,6 +65,7 @@ public:
 
 private:
     bool mGpuQueries;
+    bool mViewDependent = false;
     std::vector<PassTiming> mTimings;
 };
 

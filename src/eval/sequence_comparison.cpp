@@ -150,8 +150,13 @@ nlohmann::json runSequenceComparison(const Scene& scene, const SequenceSettings&
             const Image& est = r.aovs.at(isAo ? "ao" : "indirect");
             t.rmse.push_back(computeErrorMetrics(est, isAo ? now.ao : now.gi, &now.valid).rmse);
             // The frame as the sequence paid for it: what reran because the camera moved (a
-            // camera-fitted voxel region is rebuilt, a scene-wide grid is not).
-            t.frameMs.push_back(f == 0 ? r.frameMs : r.totalMs);
+            // camera-fitted voxel region is rebuilt, a scene-wide grid is not), less the
+            // G-buffer every method shares (drawn by the frame's first render, or again with
+            // materials by the first method that reads them).
+            double gbufferMs = 0.0;
+            for (const PassTiming& p : r.passes)
+                if (p.name == "gbuffer") gbufferMs += p.wallMs;
+            t.frameMs.push_back((f == 0 ? r.frameMs : r.totalMs) - gbufferMs);
             if (f == 0) {
                 t.extra = r.extra;
                 t.cost = deviceIndependentCost(r.extra, req.width * req.height);

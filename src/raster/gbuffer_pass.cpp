@@ -8,35 +8,39 @@
 
 namespace vct {
 
-GBuffer renderGBuffer(const GpuScene& scene, const View& view, PassTimer& timer) {
+GBuffer renderGBuffer(const GpuScene& scene, const View& view, PassTimer& timer, bool materials) {
     auto scope = timer.scope("gbuffer");
     // One program per shader variant: features the scene does not use are compiled out.
-    const GLuint program = cachedProgram(gbufferProgramKey(scene.hasTextures, scene.hasAlphaMask));
+    const GLuint program = cachedProgram(gbufferProgramKey(scene.hasTextures, scene.hasAlphaMask, materials));
 
     GBuffer g;
     g.width = view.width;
     g.height = view.height;
+    g.materials = materials;
     g.position = createTexture2D(GL_RGBA32F, g.width, g.height);
     g.normal = createTexture2D(GL_RGBA32F, g.width, g.height);
     g.geomNormal = createTexture2D(GL_RGBA32F, g.width, g.height);
-    g.albedo = createTexture2D(GL_RGBA32F, g.width, g.height);
-    g.emission = createTexture2D(GL_RGBA32F, g.width, g.height);
+    if (materials) {
+        g.albedo = createTexture2D(GL_RGBA32F, g.width, g.height);
+        g.emission = createTexture2D(GL_RGBA32F, g.width, g.height);
+    }
     g.depth = createTexture2D(GL_DEPTH_COMPONENT32F, g.width, g.height);
     g.fbo = createFramebuffer();
     GLuint fbo = g.fbo.id();
     const GLuint colors[5] = {g.position.id(), g.normal.id(), g.geomNormal.id(), g.albedo.id(), g.emission.id()};
+    const int attachments = materials ? 5 : 3;
     GLenum drawBuffers[5];
-    for (int i = 0; i < 5; ++i) {
+    for (int i = 0; i < attachments; ++i) {
         glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0 + i, colors[i], 0);
         drawBuffers[i] = GL_COLOR_ATTACHMENT0 + i;
     }
     glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, g.depth.id(), 0);
-    glNamedFramebufferDrawBuffers(fbo, 5, drawBuffers);
+    glNamedFramebufferDrawBuffers(fbo, attachments, drawBuffers);
     if (glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         throw std::runtime_error("gbuffer: framebuffer incomplete");
 
     const float zero[4] = {0, 0, 0, 0};
-    for (int i = 0; i < 5; ++i) glClearNamedFramebufferfv(fbo, GL_COLOR, i, zero);
+    for (int i = 0; i < attachments; ++i) glClearNamedFramebufferfv(fbo, GL_COLOR, i, zero);
     const float farDepth = 0.f;  // reversed-Z: 0 is infinitely far
     glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &farDepth);
 

@@ -7,6 +7,8 @@
 
 namespace vct {
 
-GBuffer renderGBuffer(const GpuScene& scene, const View& view, PassTimer& timer);
+// materials = false: position and normals only (GBuffer::materials), for renders that read
+// no albedo or emission.
+GBuffer renderGBuffer(const GpuScene& scene, const View& view, PassTimer& timer, bool materials = true);
 
 }  // namespace vct

@@ -2,8 +2,9 @@
 
 namespace vct {
 
-ProgramKey gbufferProgramKey(bool textures, bool alphaMask) {
+ProgramKey gbufferProgramKey(bool textures, bool alphaMask, bool materials) {
     ShaderDefines d;
+    if (!materials) d.push_back({"GBUFFER_SURFACE_ONLY", "1"});
     if (!textures) d.push_back({"SCENE_NO_TEXTURES", "1"});
     if (!alphaMask) d.push_back({"SCENE_NO_ALPHA_MASK", "1"});
     return graphicsProgramKey("raster/gbuffer_vert.glsl", "raster/gbuffer_frag.glsl", d);
@@ -16,7 +17,8 @@ ProgramKey compositeProgramKey() { return computeProgramKey("raster/composite_co
 std::vector<ProgramKey> rasterProgramVariants() {
     std::vector<ProgramKey> v;
     for (bool textures : {false, true})
-        for (bool alpha : {false, true}) v.push_back(gbufferProgramKey(textures, alpha));
+        for (bool alpha : {false, true})
+            for (bool materials : {false, true}) v.push_back(gbufferProgramKey(textures, alpha, materials));
     v.push_back(shadowProgramKey());
     v.push_back(directLightProgramKey());
     v.push_back(compositeProgramKey());

@@ -8,8 +8,9 @@
 
 namespace vct {
 
-// The G-buffer: texture sampling and the alpha test compiled out where the scene has none.
-ProgramKey gbufferProgramKey(bool textures, bool alphaMask);
+// The G-buffer: texture sampling and the alpha test compiled out where the scene has none,
+// albedo and emission where the render reads no material (GBuffer::materials).
+ProgramKey gbufferProgramKey(bool textures, bool alphaMask, bool materials);
 ProgramKey shadowProgramKey();
 ProgramKey directLightProgramKey();
 ProgramKey compositeProgramKey();

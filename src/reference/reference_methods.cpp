@@ -116,7 +116,7 @@ const Method& referenceAoMethod() {
         r.programs = [] { return std::vector<ProgramKey>{}; };
         r.declare = [](const PlanContext&, PassDeclarations& d) {
             // Its own noise is always reported with it.
-            d.add({kPassReferenceAo, {kGBuffer}, {kAo, kAoStderr}, "ray-traced AO at the G-buffer's points", true});
+            d.add({kPassReferenceAo, {kGBufferSurface}, {kAo, kAoStderr}, "ray-traced AO at the G-buffer's points", true});
         };
         r.execute = executeAo;
         return r;

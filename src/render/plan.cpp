@@ -64,7 +64,8 @@ ResourceId resourceForAov(const std::string& aov, const SceneFeatures& s, const 
     // No lights: direct is zero, known from the G-buffer alone.
     if (aov == "direct") return lit || s.lights > 0 ? kDirect : kGBuffer;
     if (aov == "indirect") return active.gi ? kGiIndirect : kAmbient;
-    if (aov == "normal" || aov == "depth" || aov == "albedo" || aov == "position" || aov == "emission") return kGBuffer;
+    if (aov == "normal" || aov == "depth" || aov == "position") return kGBufferSurface;
+    if (aov == "albedo" || aov == "emission") return kGBuffer;
     for (const Method* m : active.list())
         for (const MethodAov& a : m->aovs)
             if (a.info.name == aov) return a.resource;
@@ -89,7 +90,7 @@ RenderPlan planRender(const SceneFeatures& s, const RenderRequest& r) {
         return std::any_of(decls.begin(), decls.end(), [&](const PassDecl& d) { return d.id == id; });
     };
 
-    decls.push_back({kPassGBuffer, {}, {kGBuffer}, "surface points for every estimator"});
+    decls.push_back({kPassGBuffer, {}, {kGBuffer, kGBufferSurface}, "surface points for every estimator"});
     if (!lights) {
         for (PassId p : {kPassShadow, kPassDirect}) notApplicable[std::string(p.name)] = "the scene has no punctual lights";
     } else if (lit) {
@@ -135,6 +136,7 @@ RenderPlan planRender(const SceneFeatures& s, const RenderRequest& r) {
     }
 
     RenderPlan plan;
+    plan.gbufferMaterials = needed.count(kGBuffer) != 0;
     for (size_t i = 0; i < decls.size(); ++i) {
         if (selected[i]) {
             plan.run.push_back(decls[i]);
@@ -158,6 +160,8 @@ RenderPlan planRender(const SceneFeatures& s, const RenderRequest& r) {
     if (plan.runs(kPassGBuffer)) {
         if (!s.hasTextures) plan.notes.push_back("gbuffer shader compiled without texture sampling (no textures)");
         if (!s.hasAlphaMask) plan.notes.push_back("gbuffer shader compiled without the alpha test (no MASK materials)");
+        if (!plan.gbufferMaterials)
+            plan.notes.push_back("gbuffer drawn without albedo and emission (no pass or AOV of this render reads them)");
     }
     // Skipped passes in the canonical order for stable output.
     const std::vector<PassId> order = allPassIds();

@@ -140,15 +140,18 @@ RenderResult RenderSession::render(const RenderRequest& request) {
     const double start = nowMs();
     const View view = makeView(request.camera, request.width, request.height);
 
-    // G-buffer: shared across renders of the same view.
+    // G-buffer: shared across renders of the same view that reuse what they can.
     std::shared_ptr<GBuffer> gbuffer;
     if (plan.runs(kPassGBuffer)) {
         const std::string key = viewKey(view);
         // A camera path asks for a new view every frame: keep the last few, not every one.
         if (!mImpl->gbuffers.count(key) && mImpl->gbuffers.size() >= kMaxCachedGBuffers) mImpl->gbuffers.clear();
         auto& slot = mImpl->gbuffers[key];
-        if (!slot) {
-            slot = std::make_shared<GBuffer>(renderGBuffer(mImpl->gpu, view, timer));
+        // A cold render draws its G-buffer too: the rasterizing methods' costs include the
+        // raster as the reference's include its primary rays. A G-buffer drawn without
+        // materials serves only renders that read none; one with them serves every render.
+        if (!slot || !request.reuseSceneData || (plan.gbufferMaterials && !slot->materials)) {
+            slot = std::make_shared<GBuffer>(renderGBuffer(mImpl->gpu, view, timer, plan.gbufferMaterials));
             gl.checkErrors("gbuffer");
             mRunCounts["gbuffer"]++;
         }

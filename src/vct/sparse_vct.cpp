@@ -28,6 +28,8 @@ SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache, const 
     if (!cache.grids.count(key) && cache.grids.size() >= kMaxCachedVolumes) cache.grids.clear();
     auto& slot = cache.grids[key];
     if (!slot || !r.reuseSceneData) {
+        // A region that follows the view is built anew for every new view (the dense path's rule).
+        PassTimer::ViewDependent viewDependent(ctx.timer, region.followsView);
         auto scope = ctx.timer.scope("voxelize", false, Reruns::WhenSceneChanges);
         slot = std::make_shared<SparseVoxelScene>(
             buildSparseVoxels(ctx.scene, r.voxelRes, inject, r.sky, r.params, options));
@@ -49,7 +51,8 @@ SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache, const 
                            {"region", region.toJson()},
                            {"bounce_s", sv.stats.bounceSeconds},
                            {"bounces", inject ? readVctBounces(r.params) : 0}};
-    for (const GBufferPoint& g : readGBufferPoints(*ctx.gbuffer, true)) {
+    // Albedo where the G-buffer has it (GI reads it; an AO-only render draws none).
+    for (const GBufferPoint& g : readGBufferPoints(*ctx.gbuffer, ctx.gbuffer->materials)) {
         SparsePoint p;
         p.position = g.position;
         p.normal = g.normal;

@@ -182,7 +182,8 @@ Method makeVctMethod(MethodKind kind) {
     m.declare = [kind](const PlanContext& ctx, PassDeclarations& d) {
         declareVoxelPasses(ctx, d);
         if (kind == MethodKind::AO)
-            d.add({kPassConeAo, {kGBuffer, kVoxelMips}, {kAo}, "world-space AO cones: " + coneExplanation(ctx.request)});
+            d.add({kPassConeAo, {kGBufferSurface, kVoxelMips}, {kAo},
+                   "world-space AO cones: " + coneExplanation(ctx.request)});
         else
             d.add({kPassConeGi, {kGBuffer, kVoxelMips}, {kGiIndirect}, "diffuse GI cones: " + coneExplanation(ctx.request)});
         declareVoxelView(ctx, d);

@@ -84,7 +84,8 @@ nlohmann::json VoxelRegion::toJson() const {
     nlohmann::json j = {{"mode", mode},
                         {"why", why},
                         {"min", {bounds.min.x, bounds.min.y, bounds.min.z}},
-                        {"max", {bounds.max.x, bounds.max.y, bounds.max.z}}};
+                        {"max", {bounds.max.x, bounds.max.y, bounds.max.z}},
+                        {"follows_view", followsView}};
     if (!visible.empty())
         j["visible"] = {{"min", {visible.min.x, visible.min.y, visible.min.z}},
                         {"max", {visible.max.x, visible.max.y, visible.max.z}}};
@@ -118,6 +119,7 @@ VoxelRegion chooseRegionBounds(const RenderRequest& r, const Scene& scene, const
     // R and the footprint's radius there; the start offset and one voxel of trilinear support.
     const float reach = r.radius * (1.f + std::tan(0.5f * apertureDeg * 3.14159265f / 180.f));
     region.bounds = fitAoRegion(region.visible, scene.bounds, reach, offsetVoxels + 1.f, r.voxelRes);
+    region.followsView = region.bounds.min != scene.bounds.min || region.bounds.max != scene.bounds.max;
     std::ostringstream why;
     why << "visible points grown by the cone reach " << reach << " (R = " << r.radius << ") + "
         << offsetVoxels + 1.f << " voxels, clipped to the scene";

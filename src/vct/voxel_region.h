@@ -53,6 +53,11 @@ struct VoxelRegion {
     std::string why;
     Bounds3 bounds;     // what the voxels (or the clipmap's coarsest level) cover
     Bounds3 visible;    // fit: bounds of the visible points
+    // fit, cropped inside the scene: a moved camera sees other points and fits other bounds,
+    // so these voxels are built anew for the next frame and count in its cost (frame_ms). A fit
+    // that covers the whole scene is the scene's grid, kept while the view still reaches its
+    // bounds.
+    bool followsView = false;
     nlohmann::json toJson() const;
 };
 

@@ -120,6 +120,9 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
         // Lights that move rebuild a clipmap whole (its levels inject through each other).
         if (inject) key += ";lights=" + lights;
     }
+    // A region fitted to the visible points inside the scene moves with the camera: its voxels
+    // are built anew for every new view, so they count in the frame's cost.
+    PassTimer::ViewDependent viewDependent(ctx.timer, region.followsView);
     VoxelVolume v;
     if (r.reuseSceneData) {
         if (levels > 0) {

@@ -79,7 +79,9 @@ TEST(Integration, ComparisonOfAllAoMethodsVoxelizesOnce) {
     session.render(r);
     GlContext::shared().checkErrors("integration");
     EXPECT_EQ(session.passRunCounts().at("voxelize"), 1);
-    EXPECT_EQ(session.passRunCounts().at("gbuffer"), 1);
+    // One G-buffer without materials for the methods that read none, drawn again with them
+    // for the first that does (rtao-denoised's filter), which then serves every render after it.
+    EXPECT_EQ(session.passRunCounts().at("gbuffer"), 2);
 }
 
 // Every pass asks the program cache for its program: however many passes, methods and

@@ -69,6 +69,7 @@ const ScreenSpaceAo& gtaoEstimator() {
         s.name = "gtao";
         s.summary = "ground-truth-based AO (Jimenez et al. 2016, after XeGTAO)";
         s.settings = [] { return gtaoSettings().docs(); };
+        s.readsAlbedo = [](const ParamMap& params) { return gtaoSettings().read(params).multiBounce; };
         s.evaluate = [](const AoPassContext& ctx, const ParamMap& params, bool filtered) {
             return runGtao(ctx, gtaoSettings().read(params), filtered);
         };
