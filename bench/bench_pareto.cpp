@@ -147,7 +147,11 @@ int main(int argc, char** argv) {
                        {"vct cones=16 trace-scale=4", {{"vct.cones", "16"}, {"vct.trace-scale", "4"}}},
                        {"vct region=scene trace-scale=4", {{"vct.region", "scene"}, {"vct.trace-scale", "4"}}},
                        {"vct region=scene cones=16 trace-scale=4",
-                        {{"vct.region", "scene"}, {"vct.cones", "16"}, {"vct.trace-scale", "4"}}}};
+                        {{"vct.region", "scene"}, {"vct.cones", "16"}, {"vct.trace-scale", "4"}}},
+                       // Steps of one footprint instead of half: half the samples, and a wall
+                       // thinner than a voxel may fall between two of them.
+                       {"vct region=scene step=1 trace-scale=4",
+                        {{"vct.region", "scene"}, {"vct.step", "1"}, {"vct.trace-scale", "4"}}}};
     if (aoSize < 8 || giSize < 8 || truthSpp < 1 || maxSpp < 1 || runs < 1 || voxelRes < 8) {
         std::cerr << "bench_pareto: sizes >= 8, spp and runs >= 1\n";
         return 2;
