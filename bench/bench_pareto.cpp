@@ -151,7 +151,9 @@ int main(int argc, char** argv) {
                        // Steps of one footprint instead of half: half the samples, and a wall
                        // thinner than a voxel may fall between two of them.
                        {"vct region=scene step=1 trace-scale=4",
-                        {{"vct.region", "scene"}, {"vct.step", "1"}, {"vct.trace-scale", "4"}}}};
+                        {{"vct.region", "scene"}, {"vct.step", "1"}, {"vct.trace-scale", "4"}}},
+                       {"vct region=scene step=1 trace-scale=8",
+                        {{"vct.region", "scene"}, {"vct.step", "1"}, {"vct.trace-scale", "8"}}}};
     if (aoSize < 8 || giSize < 8 || truthSpp < 1 || maxSpp < 1 || runs < 1 || voxelRes < 8) {
         std::cerr << "bench_pareto: sizes >= 8, spp and runs >= 1\n";
         return 2;

@@ -64,9 +64,11 @@ VCT_CONST int CONE_STAGE_OWN = 2;
 VCT_CONST int CONE_BINDING_OWN_LIST = 7;
 VCT_CONST int CONE_OWN_LIST_HEADER = 4;  // uints before the pixels
 VCT_CONST int CONE_IMAGE_TRACED = 1;  // image unit of the traced image in the resolve stage
-// 4: a block of 16 pixels. Coarser blocks stop resolving the G-buffer's detail (a 4-pixel
-// block of a 512^2 image is already a degree of a 60-degree view).
-VCT_CONST int CONE_MAX_TRACE_SCALE = 4;
+// 8: a block of 64 pixels (a 512^2 image of a 60-degree view traces one pixel per 0.9
+// degree). What the cones gather varies over voxels and R, and the resolve keeps the
+// G-buffer's detail by surface agreement and traces the pixels no block shares, so the
+// coarsest block is a cost a study measures, not a fixed image limit.
+VCT_CONST int CONE_MAX_TRACE_SCALE = 8;
 // Normal agreement weight max(0, n_q . n_b)^8: 0.5 at 25 degrees, so a crease's other face
 // (90 degrees) gets none while a curved surface's neighbours keep most of theirs.
 VCT_CONST float CONE_RESOLVE_NORMAL_POWER = 8.0;

@@ -86,7 +86,7 @@ TEST(TraceScale, TracedPixelsKeepTheFullPassesValueAndTheErrorDoesNotGrow) {
         const Image& full = one.aovs.at(aov);
         const double fullError = computeErrorMetrics(channelMean(full), reference).rmse;
         const double fullSamples = one.extra.at(stats).at("samples").get<double>();
-        for (const int s : {2, 4}) {
+        for (const int s : {2, 4, 8}) {
             const RenderResult scaled = render(s, "vct");
             const Image& img = scaled.aovs.at(aov);
             ASSERT_EQ(img.pixels.size(), full.pixels.size());
@@ -105,13 +105,18 @@ TEST(TraceScale, TracedPixelsKeepTheFullPassesValueAndTheErrorDoesNotGrow) {
             const double error = computeErrorMetrics(channelMean(img), reference).rmse;
             EXPECT_LT(error, fullError + (gi ? 0.005 : 0.01)) << aov << " s = " << s << ", full " << fullError;
             // Against the full pass: a block mapping off by one block would differ by ~0.2
-            // (measured: AO 0.027 / 0.075, GI 0.010 / 0.026 at s = 2 / 4).
-            EXPECT_LT(computeErrorMetrics(channelMean(img), channelMean(full)).rmse, gi ? 0.05 : 0.1)
-                << aov << " s = " << s;
-            // The cost the pass counts: a traced pixel per block and the few that trace their own.
+            // (measured: AO 0.027 / 0.075, GI 0.010 / 0.026 at s = 2 / 4). At s = 8 a block is
+            // a sixteenth of this 128-pixel image and the resolved AO differs by 0.125 where
+            // it is right: the traced pixels above check its mapping.
+            if (s <= 4)
+                EXPECT_LT(computeErrorMetrics(channelMean(img), channelMean(full)).rmse, gi ? 0.05 : 0.1)
+                    << aov << " s = " << s;
+            // The cost the pass counts: a traced pixel per block and the few that trace their
+            // own (at s = 8 on this small image, a third as many as the blocks: AO 1.50 x the
+            // full pass's samples / 64).
             const nlohmann::json& cost = scaled.extra.at(stats);
             const double samples = cost.at("samples").get<double>();
-            EXPECT_LT(samples, 1.5 * fullSamples / double(s * s)) << aov << " s = " << s;
+            EXPECT_LT(samples, (s <= 4 ? 1.5 : 2.0) * fullSamples / double(s * s)) << aov << " s = " << s;
             EXPECT_GT(samples, 0.5 * fullSamples / double(s * s)) << aov << " s = " << s;
             EXPECT_EQ(cost.at("surface_pixels"), one.extra.at(stats).at("surface_pixels"));
             EXPECT_LT(cost.at("traced_pixels").get<int>(), 2 * cost.at("surface_pixels").get<int>() / (s * s));
