@@ -160,7 +160,8 @@ def write_markdown(merged, plots, dropped, spec_path, out_path, command):
          f"Machine: GL renderer **{renderer}**, {cores} cores" + (f", commit `{commit}`" if commit else "") +
          f"; {cases[0].get('timing_runs') if cases else '?'} timed runs per variant.  ",
          "Times are wall-clock per frame on this renderer (median of the timed runs after a warm-up, "
-         "including the method's own passes; see `vct compare`), so they rank methods on a CPU rasterizer "
+         "including the method's own passes and the G-buffer a moved camera draws again; see `vct compare`), "
+         "so they rank methods on a CPU rasterizer "
          "and say little about a GPU. Errors are against the Embree reference at the same G-buffer points; "
          "differences below about twice the reference's standard error are noise.", ""]
     if dropped:
