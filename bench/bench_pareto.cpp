@@ -17,8 +17,9 @@
 //
 // AO alone fits its voxels to the visible points by default (vct.region=auto), and on Sponza
 // and the off-screen scene that region follows the camera, so the next frame voxelizes again
-// and frame_ms counts it; the vct.region=scene variants keep one grid over the scene for
-// every frame (GI's region is the scene already: those variants run for AO only).
+// and frame_ms counts it; the default vct.region=scene variants keep one grid over the scene
+// for every frame (GI's region is the scene already: those run for AO only; a --vct variant runs
+// for every case).
 //
 // The truth is the reference at --truth-spp (256) with another seed than the points', so a
 // point's error is its own noise and bias, not shared samples. Sponza: the view of
@@ -101,29 +102,35 @@ int main(int argc, char** argv) {
     int aoSize = 512, giSize = 256, truthSpp = 256, maxSpp = 128, runs = 3, voxelRes = 128;
     std::vector<std::string> only;
     using Settings = std::vector<std::pair<std::string, std::string>>;
-    std::vector<std::pair<std::string, Settings>> vctVariants;
+    struct Variant {
+        std::string label;
+        Settings settings;
+        bool aoOnly = false;  // GI's region is the scene already: a scene-wide variant repeats the default
+    };
+    std::vector<Variant> vctVariants;
     bool printPasses = false;
-    for (int i = 1; i < argc; i += 2) {
+    for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--passes") {
             printPasses = true;
-            --i;  // a flag: no value follows
             continue;
         }
         if (i + 1 >= argc) {
             std::cerr << "bench_pareto: " << a << " needs a value\n";
             return 2;
         }
-        if (a == "--ao-size") aoSize = std::atoi(argv[i + 1]);
-        else if (a == "--gi-size") giSize = std::atoi(argv[i + 1]);
-        else if (a == "--truth-spp") truthSpp = std::atoi(argv[i + 1]);
-        else if (a == "--max-spp") maxSpp = std::atoi(argv[i + 1]);
-        else if (a == "--runs") runs = std::atoi(argv[i + 1]);
-        else if (a == "--voxel-res") voxelRes = std::atoi(argv[i + 1]);
-        else if (a == "--case") only.push_back(argv[i + 1]);
+        const char* value = argv[++i];
+        if (a == "--ao-size") aoSize = std::atoi(value);
+        else if (a == "--gi-size") giSize = std::atoi(value);
+        else if (a == "--truth-spp") truthSpp = std::atoi(value);
+        else if (a == "--max-spp") maxSpp = std::atoi(value);
+        else if (a == "--runs") runs = std::atoi(value);
+        else if (a == "--voxel-res") voxelRes = std::atoi(value);
+        else if (a == "--case") only.push_back(value);
         else if (a == "--vct") {
+            // A variant named here runs for every case.
             Settings settings;
-            std::istringstream words(argv[i + 1]);
+            std::istringstream words(value);
             for (std::string w; words >> w;) {
                 const size_t eq = w.find('=');
                 if (eq == std::string::npos || eq == 0) {
@@ -132,7 +139,7 @@ int main(int argc, char** argv) {
                 }
                 settings.push_back({w.substr(0, eq), w.substr(eq + 1)});
             }
-            const std::string words0 = argv[i + 1];
+            const std::string words0 = value;
             vctVariants.push_back({words0.empty() ? "vct" : "vct " + words0, settings});
         }
         else {
@@ -145,15 +152,18 @@ int main(int argc, char** argv) {
                        {"vct trace-scale=2", {{"vct.trace-scale", "2"}}},
                        {"vct trace-scale=4", {{"vct.trace-scale", "4"}}},
                        {"vct cones=16 trace-scale=4", {{"vct.cones", "16"}, {"vct.trace-scale", "4"}}},
-                       {"vct region=scene trace-scale=4", {{"vct.region", "scene"}, {"vct.trace-scale", "4"}}},
+                       {"vct region=scene trace-scale=4", {{"vct.region", "scene"}, {"vct.trace-scale", "4"}}, true},
                        {"vct region=scene cones=16 trace-scale=4",
-                        {{"vct.region", "scene"}, {"vct.cones", "16"}, {"vct.trace-scale", "4"}}},
+                        {{"vct.region", "scene"}, {"vct.cones", "16"}, {"vct.trace-scale", "4"}},
+                        true},
                        // Steps of one footprint instead of half: half the samples, and a wall
                        // thinner than a voxel may fall between two of them.
                        {"vct region=scene step=1 trace-scale=4",
-                        {{"vct.region", "scene"}, {"vct.step", "1"}, {"vct.trace-scale", "4"}}},
+                        {{"vct.region", "scene"}, {"vct.step", "1"}, {"vct.trace-scale", "4"}},
+                        true},
                        {"vct region=scene step=1 trace-scale=8",
-                        {{"vct.region", "scene"}, {"vct.step", "1"}, {"vct.trace-scale", "8"}}}};
+                        {{"vct.region", "scene"}, {"vct.step", "1"}, {"vct.trace-scale", "8"}},
+                        true}};
     if (aoSize < 8 || giSize < 8 || truthSpp < 1 || maxSpp < 1 || runs < 1 || voxelRes < 8) {
         std::cerr << "bench_pareto: sizes >= 8, spp and runs >= 1\n";
         return 2;
@@ -219,14 +229,11 @@ int main(int argc, char** argv) {
             r.params.set(denoised + ".spp", std::to_string(spp));
             variants.push_back({denoised + " " + std::to_string(spp) + " spp", r});
         }
-        for (const auto& [label, params] : vctVariants) {
-            const bool sceneRegion =
-                std::find(params.begin(), params.end(), std::make_pair(std::string("vct.region"), std::string("scene"))) !=
-                params.end();
-            if (c.gi && sceneRegion && vctVariants.size() > 1) continue;  // GI's region is the scene already
+        for (const Variant& v : vctVariants) {
+            if (c.gi && v.aoOnly) continue;
             RenderRequest r = request("vct", 1, 0);
-            for (const auto& [k, v] : params) r.params.set(k, v);
-            variants.push_back({label, r});
+            for (const auto& [k, value] : v.settings) r.params.set(k, value);
+            variants.push_back({v.label, r});
         }
 
         std::vector<Point> points;
@@ -264,8 +271,7 @@ int main(int argc, char** argv) {
                     c.path.c_str(), base.width, base.height, c.radius, c.sky, c.gi ? "indirect radiance" : "AO",
                     truthSpp);
         std::printf("%-30s %9s %11s %11s  %s\n", "point", "rmse", "frame_ms", "time_ms", "Pareto (frame, cold)");
-        for (const Point& p : points)
-        {
+        for (const Point& p : points) {
             std::printf("%-30s %9.4f %11.1f %11.1f  %s %s\n", p.label.c_str(), p.rmse, p.frameMs, p.timeMs,
                         p.frontFrame ? "frame" : "     ", p.frontTime ? "cold" : "");
             if (printPasses) std::printf("    passes (ms): %s\n", p.passes.c_str());

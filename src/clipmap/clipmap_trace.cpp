@@ -24,9 +24,7 @@ void checkInputs(const Clipmap& cm, const GBuffer& g, const View& view, const st
     if (cm.layout.levelCount < 1 || int(cm.levels.size()) != cm.layout.levelCount)
         throw InternalError(pass, "clipmap has no levels");
     for (const VoxelGrid& level : cm.levels) checkGrid(level, pass);
-    if (g.width <= 0 || g.height <= 0 || !g.position || !g.normal || !g.geomNormal || (albedo && !g.albedo))
-        throw InternalError(pass, "G-buffer is incomplete (position, normal, geomNormal" +
-                                      std::string(albedo ? ", albedo)" : ")"));
+    requireGBuffer(g, pass, albedo);
     if (g.width != view.width || g.height != view.height)
         throw InternalError(pass, "G-buffer size does not match the view");
 }

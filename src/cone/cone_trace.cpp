@@ -21,9 +21,7 @@ namespace {
 enum class ConeMode { AO, GI };
 
 void checkGBuffer(const GBuffer& g, const View& view, const std::string& pass, bool albedo) {
-    if (g.width <= 0 || g.height <= 0 || !g.position || !g.normal || !g.geomNormal || (albedo && !g.albedo))
-        throw InternalError(pass, albedo ? "G-buffer is incomplete (position, normal, geomNormal, albedo)"
-                                         : "G-buffer is incomplete (position, normal, geomNormal)");
+    requireGBuffer(g, pass, albedo);
     if (g.width != view.width || g.height != view.height)
         throw InternalError(pass, "G-buffer " + std::to_string(g.width) + "x" + std::to_string(g.height) +
                                       " does not match the view " + std::to_string(view.width) + "x" +

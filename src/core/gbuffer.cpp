@@ -5,6 +5,12 @@
 
 namespace vct {
 
+void requireGBuffer(const GBuffer& g, const std::string& pass, bool albedo) {
+    if (g.width <= 0 || g.height <= 0 || !g.position || !g.normal || !g.geomNormal || (albedo && !g.albedo))
+        throw InternalError(pass, albedo ? "G-buffer is incomplete (position, normal, geomNormal, albedo)"
+                                         : "G-buffer is incomplete (position, normal, geomNormal)");
+}
+
 void bindGBufferTextures(const GBuffer& g) {
     glBindTextureUnit(kUnitPosition, g.position.id());
     glBindTextureUnit(kUnitNormal, g.normal.id());

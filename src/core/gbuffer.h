@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include <string>
 #include <vector>
 
 namespace vct {
@@ -21,12 +22,16 @@ struct GBuffer {
     GlTexture geomNormal;  // xyz world geometric normal, facing the camera; w = triangle id + 1 (as float)
     GlTexture albedo;      // rgb linear base colour (texture x factor); a = 1 on surface
     GlTexture emission;    // rgb linear emitted radiance
-    // false: the render reads no material (RenderPlan::gbufferMaterials), and albedo and
-    // emission are not drawn (null textures).
-    bool materials = true;
     GlTexture depth;       // GL_DEPTH_COMPONENT32F, reversed-Z (1 at near, 0 at infinity)
     GlFramebuffer fbo;
+    // False where the render reads no material (RenderPlan::gbufferMaterials): albedo and
+    // emission are then not drawn (null textures).
+    bool hasMaterials() const { return bool(albedo); }
 };
+
+// Throws InternalError naming `pass` unless g has a size and the surface textures (position,
+// normal, geomNormal), and albedo when `albedo` is true.
+void requireGBuffer(const GBuffer& g, const std::string& pass, bool albedo);
 
 // Texture units / image units by convention, so shaders and C++ agree.
 // Shaders that read the G-buffer bind position=0, normal=1, geomNormal=2, albedo=3,

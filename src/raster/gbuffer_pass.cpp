@@ -16,7 +16,6 @@ GBuffer renderGBuffer(const GpuScene& scene, const View& view, PassTimer& timer,
     GBuffer g;
     g.width = view.width;
     g.height = view.height;
-    g.materials = materials;
     g.position = createTexture2D(GL_RGBA32F, g.width, g.height);
     g.normal = createTexture2D(GL_RGBA32F, g.width, g.height);
     g.geomNormal = createTexture2D(GL_RGBA32F, g.width, g.height);

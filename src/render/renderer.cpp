@@ -150,7 +150,7 @@ RenderResult RenderSession::render(const RenderRequest& request) {
         // A cold render draws its G-buffer too: the rasterizing methods' costs include the
         // raster as the reference's include its primary rays. A G-buffer drawn without
         // materials serves only renders that read none; one with them serves every render.
-        if (!slot || !request.reuseSceneData || (plan.gbufferMaterials && !slot->materials)) {
+        if (!slot || !request.reuseSceneData || (plan.gbufferMaterials && !slot->hasMaterials())) {
             slot = std::make_shared<GBuffer>(renderGBuffer(mImpl->gpu, view, timer, plan.gbufferMaterials));
             gl.checkErrors("gbuffer");
             mRunCounts["gbuffer"]++;

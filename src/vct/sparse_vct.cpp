@@ -52,7 +52,7 @@ SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache, const 
                            {"bounce_s", sv.stats.bounceSeconds},
                            {"bounces", inject ? readVctBounces(r.params) : 0}};
     // Albedo where the G-buffer has it (GI reads it; an AO-only render draws none).
-    for (const GBufferPoint& g : readGBufferPoints(*ctx.gbuffer, ctx.gbuffer->materials)) {
+    for (const GBufferPoint& g : readGBufferPoints(*ctx.gbuffer, ctx.gbuffer->hasMaterials())) {
         SparsePoint p;
         p.position = g.position;
         p.normal = g.normal;

@@ -108,9 +108,10 @@ TEST(TraceScale, TracedPixelsKeepTheFullPassesValueAndTheErrorDoesNotGrow) {
             // (measured: AO 0.027 / 0.075, GI 0.010 / 0.026 at s = 2 / 4). At s = 8 a block is
             // a sixteenth of this 128-pixel image and the resolved AO differs by 0.125 where
             // it is right: the traced pixels above check its mapping.
-            if (s <= 4)
+            if (s <= 4) {
                 EXPECT_LT(computeErrorMetrics(channelMean(img), channelMean(full)).rmse, gi ? 0.05 : 0.1)
                     << aov << " s = " << s;
+            }
             // The cost the pass counts: a traced pixel per block and the few that trace their
             // own (at s = 8 on this small image, a third as many as the blocks: AO 1.50 x the
             // full pass's samples / 64).

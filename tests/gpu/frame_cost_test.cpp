@@ -99,7 +99,9 @@ TEST(FrameCost, WhatTheNextFrameReusesIsWhatFrameMsLeavesOut) {
             EXPECT_EQ(staticPasses.count(c.ao == "vct" ? "voxelize" : "bvh"), follows ? 0u : 1u)
                 << what << ": voxels or a BVH the next frame keeps";
         }
-        if (follows) EXPECT_TRUE(warmPasses.count("voxelize") && warmPasses.count("mips")) << what;
+        if (follows) {
+            EXPECT_TRUE(warmPasses.count("voxelize") && warmPasses.count("mips")) << what;
+        }
         if (c.ao == "gtao") {
             for (const std::string& name : staticPasses)
                 EXPECT_EQ(name, "shadow") << "screen-space AO has no static data but the direct light's shadow map";

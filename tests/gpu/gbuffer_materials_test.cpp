@@ -2,6 +2,7 @@
 // and AOVs read no albedo or emission skips them, and its images are the ones the full
 // G-buffer gives. Checked against an independent path: the same request with the albedo AOV
 // added, which draws the materials, in a session of its own.
+#include "eval/metrics.h"
 #include "gl/context.h"
 #include "methods/registry.h"
 #include "render/renderer.h"
@@ -17,15 +18,7 @@ using namespace vct;
 
 namespace {
 
-float maxAbsDiff(const Image& a, const Image& b) {
-    EXPECT_EQ(a.pixels.size(), b.pixels.size());
-    float d = 0.f;
-    for (size_t i = 0; i < std::min(a.pixels.size(), b.pixels.size()); ++i)
-        d = std::max(d, std::abs(a.pixels[i] - b.pixels[i]));
-    return d;
-}
-
-RenderRequest overhangRequest(const Scene& s) {
+RenderRequest smallRequest(const Scene& s) {
     RenderRequest r;
     r.width = r.height = 32;
     r.camera = resolveCamera(s, CameraRequest{}, 1.f);
@@ -42,7 +35,7 @@ TEST(GBufferMaterials, AoAloneDrawsNoMaterialAndGivesTheSameImage) {
     const Scene scene = loadScene(path);
     for (const Method* m : registeredMethods()) {
         if (m->kind != MethodKind::AO) continue;
-        RenderRequest r = overhangRequest(scene);
+        RenderRequest r = smallRequest(scene);
         r.ao = m->name;
         r.aovs = {"ao"};
         RenderSession surfaceOnly(scene);
@@ -56,13 +49,13 @@ TEST(GBufferMaterials, AoAloneDrawsNoMaterialAndGivesTheSameImage) {
         const bool readsAlbedo = m->name == "rtao-denoised";
         EXPECT_EQ(a.plan.gbufferMaterials, readsAlbedo) << m->name;
         EXPECT_TRUE(b.plan.gbufferMaterials) << m->name;
-        EXPECT_EQ(maxAbsDiff(a.aovs.at("ao"), b.aovs.at("ao")), 0.f) << m->name;
+        EXPECT_EQ(computeErrorMetrics(a.aovs.at("ao"), b.aovs.at("ao")).maxAbs, 0.0) << m->name;
     }
 }
 
 TEST(GBufferMaterials, GtaoMultiBounceReadsTheAlbedo) {
     const Scene scene = loadScene(vcttest::sourceDir() + "/scenes/cornell_box.gltf");
-    RenderRequest r = overhangRequest(scene);
+    RenderRequest r = smallRequest(scene);
     r.ao = "gtao";
     r.aovs = {"ao"};
     r.params.set("gtao.multibounce", "1");
@@ -74,14 +67,14 @@ TEST(GBufferMaterials, GtaoMultiBounceReadsTheAlbedo) {
     EXPECT_FALSE(plain.plan.gbufferMaterials);
     // The red and green walls' albedo lifts the visibility the multi-bounce fit returns: had
     // the pass read a G-buffer without albedo, both images would be the same.
-    EXPECT_GT(maxAbsDiff(bounced.aovs.at("ao"), plain.aovs.at("ao")), 1e-3f);
+    EXPECT_GT(computeErrorMetrics(bounced.aovs.at("ao"), plain.aovs.at("ao")).maxAbs, 1e-3);
     GlContext::shared().checkErrors("gtao multibounce");
 }
 
 TEST(GBufferMaterials, AFullGBufferServesALaterRenderAndNotTheOtherWayRound) {
     const Scene scene = loadScene(vcttest::sourceDir() + "/scenes/cornell_box.gltf");
     RenderSession session(scene);
-    RenderRequest r = overhangRequest(scene);
+    RenderRequest r = smallRequest(scene);
     r.ao = "vct";
     r.aovs = {"ao"};
     session.render(r);
