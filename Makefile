@@ -10,7 +10,7 @@ ASAN_BUILD ?= build-asan
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: deps build render test asan bench scenes results convergence pareto clean
+.PHONY: deps build render test asan bench scenes results convergence convergence-gi pareto clean
 
 deps:
 	@bash scripts/install-deps.sh
@@ -64,7 +64,8 @@ results: build
 	python3 scripts/make_results.py --vct ./$(BUILD)/vct
 
 # Regenerates the convergence tables of docs/convergence.md (both backends, 32^3..256^3; the
-# default march, the lanes on a cubic grid, and those lanes over optical-depth levels).
+# default march, the lanes on a cubic grid, and those lanes over optical-depth levels; AO, then
+# GI on the emitting families) and the Cornell box's per-surface GI table.
 convergence: build
 	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend gl --markdown docs/convergence_gl.md
 	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend vdb --markdown docs/convergence_vdb.md
@@ -74,6 +75,20 @@ convergence: build
 		--markdown docs/convergence_vdb_lanes.md
 	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend gl --param vct.lanes=0 --param vct.grid=cube \
 		--param vct.opacity=depth --markdown docs/convergence_gl_lanes_depth.md
+	$(MAKE) convergence-gi
+
+convergence-gi: build
+	./$(BUILD)/bench_convergence --gi --res 32,64,128,256 --backend gl --markdown docs/convergence_gi_gl.md
+	./$(BUILD)/bench_convergence --gi --res 32,64,128,256 --backend vdb --markdown docs/convergence_gi_vdb.md
+	./$(BUILD)/bench_convergence --gi --res 32,64,128,256 --backend gl --param vct.opacity=depth \
+		--markdown docs/convergence_gi_gl_depth.md
+	./$(BUILD)/bench_convergence --gi --res 32,64,128,256 --backend gl --param vct.lanes=0 --param vct.grid=cube \
+		--markdown docs/convergence_gi_gl_lanes.md
+	./$(BUILD)/bench_convergence --gi --res 32,64,128,256 --backend gl --param vct.lanes=0 --param vct.grid=cube \
+		--param vct.opacity=depth --markdown docs/convergence_gi_gl_lanes_depth.md
+	./$(BUILD)/bench_cornell_gi --res 32,64,128,256 > docs/cornell_gi.txt.tmp
+	./$(BUILD)/bench_cornell_gi --res 32,64,128,256 --param vct.opacity=depth >> docs/cornell_gi.txt.tmp
+	mv docs/cornell_gi.txt.tmp docs/cornell_gi.txt
 
 clean:
 	rm -rf $(BUILD) $(ASAN_BUILD) out

@@ -9,7 +9,13 @@
 #include <string>
 
 int main(int argc, char** argv) {
-    if (argc != 2) {
+    const std::string arg = argc == 2 ? argv[1] : "";
+    if (arg == "-h" || arg == "--help") {
+        std::printf("usage: %s OUTDIR\n  writes OUTDIR/<name>.gltf for every project scene\n", argv[0]);
+        return 0;
+    }
+    // An option is not a directory: "--help/" or "-o/" would be created and filled.
+    if (argc != 2 || arg.empty() || arg[0] == '-') {
         std::fprintf(stderr, "usage: %s OUTDIR\n  writes OUTDIR/<name>.gltf for every project scene\n",
                      argv[0]);
         return 2;

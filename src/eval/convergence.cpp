@@ -232,13 +232,20 @@ std::vector<double> coneModelAoAt(const AoConvergenceCase& c, const ParamMap& pa
     return out;
 }
 
-std::vector<double> vctAoAt(const AoConvergenceCase& c, int voxelRes, const std::string& backend,
-                            const ParamMap& params) {
+namespace {
+
+// The registry's VCT method (--ao vct or --gi vct) at a case's points: a G-buffer of the points
+// (and, on screen, the visible occluder points), of albedo `albedo`; returns the first channel
+// of `out` at the scored points.
+std::vector<double> vctAt(const AoConvergenceCase& c, int voxelRes, const std::string& backend, const ParamMap& params,
+                          bool gi) {
     GlContext& gl = GlContext::shared();
     const Scene& scene = c.scene;
     const GpuScene gpu = uploadScene(scene);
+    // GI's points have albedo 1: their indirect light is the light they gather.
+    const glm::vec3 albedo = gi ? glm::vec3(1.f) : glm::vec3(0.7f);
     std::vector<GBufferPoint> pts;
-    for (const glm::vec3& p : c.points) pts.push_back({p, glm::vec3(0, 1, 0), glm::vec3(0, 1, 0), glm::vec3(0.7f), true});
+    for (const glm::vec3& p : c.points) pts.push_back({p, glm::vec3(0, 1, 0), glm::vec3(0, 1, 0), albedo, true});
     for (size_t i = 0; i < c.visiblePoints.size(); ++i)
         pts.push_back({c.visiblePoints[i], c.visibleNormals[i], c.visibleNormals[i], glm::vec3(0.5f), true});
     const int width = int(pts.size());
@@ -247,12 +254,21 @@ std::vector<double> vctAoAt(const AoConvergenceCase& c, int voxelRes, const std:
     RenderRequest r;
     r.width = width;
     r.height = 1;
-    r.ao = "vct";
-    r.aovs = {"ao"};
+    r.params = params;
+    if (gi) {
+        r.gi = "vct";
+        r.aovs = {"indirect"};
+        r.sky = 0.f;
+        // Nothing reflects, so every bounce between voxels gathers and re-injects zero: the
+        // images are those of any vct.bounces, without the bounces' gathers at every voxel.
+        if (!r.params.has("vct.bounces")) r.params.set("vct.bounces", "0");
+    } else {
+        r.ao = "vct";
+        r.aovs = {"ao"};
+    }
     r.radius = c.radius;
     r.voxelRes = voxelRes;
     r.backend = backend;
-    r.params = params;
     r.camera = defaultCamera(scene.bounds, float(width), 0.8f);
     const SceneFeatures features = analyzeScene(scene);
     const RenderPlan plan = planRender(features, r);
@@ -263,14 +279,67 @@ std::vector<double> vctAoAt(const AoConvergenceCase& c, int voxelRes, const std:
     std::map<std::string, int> runCounts;
     nlohmann::json extra;
     MethodContext ctx{plan, r, scene, features, gpu, &gbuffer, view, timer, session, frame, outputs, runCounts, extra};
-    requireMethod(MethodKind::AO, "vct", "--ao")->execute(ctx);
+    if (gi)
+        requireMethod(MethodKind::GI, "vct", "--gi")->execute(ctx);
+    else
+        requireMethod(MethodKind::AO, "vct", "--ao")->execute(ctx);
     gl.checkErrors("convergence " + c.name);
-    const FrameResource* ao = outputs.find(kAo);
-    if (!ao) throw InternalError("vctAoAt", "the VCT method wrote no AO");
-    const Image img = ao->image.empty() ? readTexture2D(ao->texture.id(), width, 1, 1) : ao->image;
+    const ResourceId id = gi ? kGiIndirect : kAo;
+    const FrameResource* res = outputs.find(id);
+    if (!res) throw InternalError("vctAt", "the VCT method wrote no " + std::string(gi ? "indirect light" : "AO"));
+    const int channels = gi ? 4 : 1;
+    const Image img = res->image.empty() ? readTexture2D(res->texture.id(), width, 1, channels) : res->image;
     std::vector<double> out;
-    for (size_t i = 0; i < c.points.size(); ++i) out.push_back(img.pixels[i]);
+    for (size_t i = 0; i < c.points.size(); ++i) out.push_back(img.pixels[i * size_t(img.channels)]);
     return out;
+}
+
+// The AO radius that stands for an unbounded one: every case's occluders lie within 10 R.
+constexpr float kGiRadius = 1.0e3f;
+
+}  // namespace
+
+std::vector<double> vctAoAt(const AoConvergenceCase& c, int voxelRes, const std::string& backend,
+                            const ParamMap& params) {
+    return vctAt(c, voxelRes, backend, params, false);
+}
+
+std::vector<AoConvergenceCase> giConvergenceCases() {
+    std::vector<AoConvergenceCase> out;
+    for (AoConvergenceCase c : aoConvergenceCases()) {
+        if (c.onScreen) continue;
+        c.name.replace(c.name.size() - 3, 3, "gi");
+        for (Material& m : c.scene.materials) {
+            const bool emitter = m.name == "occluder";
+            m.baseColorFactor = glm::vec4(0.f, 0.f, 0.f, 1.f);
+            m.emissiveFactor = glm::vec3(emitter ? kGiEmission : 0.f);
+            m.doubleSided = emitter;
+        }
+        out.push_back(std::move(c));
+    }
+    return out;
+}
+
+std::vector<double> exactGiAt(const AoConvergenceCase& c) {
+    std::vector<double> out;
+    for (const glm::vec3& p : c.points)
+        out.push_back(kGiEmission * (1.0 - analyticAo(c.occluders, p, glm::vec3(0, 1, 0), kGiRadius)));
+    return out;
+}
+
+std::vector<double> coneModelGiAt(const AoConvergenceCase& c, const ParamMap& params) {
+    const ConeSettings cone = readConeSettings(params);
+    const std::vector<glm::vec4> set = diffuseConeSet(cone.coneCount);
+    std::vector<double> out;
+    for (const glm::vec3& p : c.points)
+        out.push_back(kGiEmission * (1.0 - analyticConeModelAo(c.occluders, p, glm::vec3(0, 1, 0), kGiRadius, set,
+                                                               cone.apertureDeg)));
+    return out;
+}
+
+std::vector<double> vctGiAt(const AoConvergenceCase& c, int voxelRes, const std::string& backend,
+                            const ParamMap& params) {
+    return vctAt(c, voxelRes, backend, params, true);
 }
 
 PointError pointError(const std::vector<double>& a, const std::vector<double>& b) {

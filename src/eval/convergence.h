@@ -1,10 +1,11 @@
 // The convergence harness of voxel cone tracing: families of closed-form AO cases (plates
 // and discs above a floor at heights and sizes around R, a wall, a right-angle corner, a
-// sphere above a plane, closed rooms), each scored at 25 fixed floor points, some within R of an
-// occluder's edge. Every point has three values: the exact AO and the cone model of VCT's
-// cone set, both by analytic quadrature (eval/analytic_ao.h), and what VCT computes there
-// through the registry's method (dense or sparse, any resolution and --param), on a G-buffer
-// made of the points. VCT's error splits into
+// sphere above a plane, closed rooms), each scored at 25 fixed floor points, some within R of
+// an occluder's edge, and GI on the same geometry with the occluders emitting. Every point has
+// three values: the exact value and the cone model of VCT's cone set, both by analytic
+// quadrature (eval/analytic_ao.h), and what VCT computes there through the registry's method
+// (dense or sparse, any resolution and --param), on a G-buffer made of the points. VCT's
+// error splits into
 //   cone error  = cone model - exact   (the cone set's, whatever the voxels),
 //   voxel error = VCT - cone model     (what finer voxels must drive to zero).
 // An occluder is off screen (only the floor points are in the G-buffer, as when the camera
@@ -47,6 +48,24 @@ std::vector<double> coneModelAoAt(const AoConvergenceCase& c, const ParamMap& pa
 // through the registry's method on a G-buffer of the points (and, on screen, the visible
 // occluder points). Needs the GL context.
 std::vector<double> vctAoAt(const AoConvergenceCase& c, int voxelRes, const std::string& backend,
+                            const ParamMap& params);
+
+// GI on the same families: the case's occluders emit kGiEmission from both faces and reflect
+// nothing, the floor reflects nothing, the sky is black. A floor point's gathered light (its
+// indirect light over its albedo) is then kGiEmission times the cosine-weighted share of its
+// hemisphere the occluders cover, whatever the distance: exactly 1 minus the occluders' AO
+// with an unbounded radius, and the cone model's gathered light is 1 minus the cone model's AO
+// the same way. Every bounce in the voxels gathers black (nothing reflects), so the closed
+// form holds with any vct.bounces. The closed rooms are closed emissive boxes: every point
+// gathers kGiEmission. Only the off-screen cases: GI voxelizes the whole scene, so a visible
+// occluder changes nothing.
+inline constexpr float kGiEmission = 1.f;
+std::vector<AoConvergenceCase> giConvergenceCases();
+std::vector<double> exactGiAt(const AoConvergenceCase& c);
+std::vector<double> coneModelGiAt(const AoConvergenceCase& c, const ParamMap& params);
+// VCT's gathered light at a case's points: --gi vct (sky 0), the indirect light of points of
+// albedo 1.
+std::vector<double> vctGiAt(const AoConvergenceCase& c, int voxelRes, const std::string& backend,
                             const ParamMap& params);
 
 // RMS and largest absolute difference of a - b.

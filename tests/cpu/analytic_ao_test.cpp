@@ -114,3 +114,37 @@ TEST(AnalyticAo, RefiningTheConeSetDrivesTheConeErrorDown) {
     for (size_t i = 1; i < errors.size(); ++i) EXPECT_LT(errors[i], errors[i - 1]) << i;
     EXPECT_LT(errors.back(), 0.02);
 }
+
+// The GI families (eval/convergence.h): the occluders emit from both faces, nothing reflects,
+// and a floor point gathers the emission times the share of its cosine-weighted hemisphere the
+// emitters cover: on a disc's axis the view factor a^2 / (a^2 + h^2), on a sphere's (r / d)^2,
+// in a closed room all of it.
+TEST(AnalyticAo, GiCasesGatherTheClosedFormsOfTheirEmitters) {
+    int checked = 0;
+    for (const AoConvergenceCase& c : giConvergenceCases()) {
+        EXPECT_FALSE(c.onScreen) << c.name;
+        for (const Material& m : c.scene.materials) {
+            EXPECT_EQ(glm::vec3(m.baseColorFactor), glm::vec3(0.f)) << c.name << ": " << m.name << " reflects";
+            EXPECT_EQ(m.isEmissive(), m.doubleSided) << c.name << ": " << m.name;
+        }
+        const std::vector<double> gi = exactGiAt(c);
+        const size_t centre = 12;  // floorGrid's middle point, (0, 0, 0)
+        ASSERT_EQ(c.points.size(), 25u) << c.name;
+        if (c.name == "disc h=0.7R r=0.3R gi") {
+            ++checked;
+            EXPECT_NEAR(gi[centre], kGiEmission * 0.09 / (0.09 + 0.49), 2e-3);
+        } else if (c.name == "sphere r=0.5R d=0.8R gi") {
+            ++checked;
+            EXPECT_NEAR(gi[centre], kGiEmission * std::pow(0.5 / 0.8, 2), 2e-3);
+        } else if (c.family == "room") {
+            ++checked;
+            for (double v : gi) EXPECT_NEAR(v, kGiEmission, 1e-9) << c.name;
+        }
+        // The cone model gathers what its cones cover: between nothing and everything.
+        for (double v : coneModelGiAt(c, ParamMap())) {
+            EXPECT_GE(v, 0.0) << c.name;
+            EXPECT_LE(v, kGiEmission + 1e-9) << c.name;
+        }
+    }
+    EXPECT_EQ(checked, 4) << "a case the closed forms name is missing";
+}
