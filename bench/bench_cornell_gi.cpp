@@ -8,7 +8,7 @@
 // streaks and leaks.
 //
 //   bench_cornell_gi [--res 32,64,128] [--size 96] [--spp 1024] [--param KEY=VALUE ...]
-//                    [--images DIR]
+//                    [--images DIR] [--scene FILE]
 #include "cone/cone_bounce.h"
 #include "eval/image_io.h"
 #include "gl/context.h"
@@ -54,7 +54,7 @@ double luminance(const Image& img, size_t i) {
 
 int main(int argc, char** argv) {
     CLI::App app{"VCT GI on the Cornell box per surface against the bounce-matched path tracer"};
-    std::string resList = "32,64,128", images;
+    std::string resList = "32,64,128", images, scenePath = std::string(VCT_SOURCE_DIR) + "/scenes/cornell_box.gltf";
     int size = 96, spp = 1024;
     std::vector<std::string> params;
     app.add_option("--res", resList, "voxel resolutions, comma-separated")->capture_default_str();
@@ -62,12 +62,14 @@ int main(int argc, char** argv) {
     app.add_option("--spp", spp, "path tracer samples per pixel")->capture_default_str();
     app.add_option("--param", params, "KEY=VALUE for VCT (repeatable)");
     app.add_option("--images", images, "write the images as PNG into this directory");
+    app.add_option("--scene", scenePath, "the Cornell box or a variant of it (its walls where they are: other lights, "
+                                         "materials or boxes)");
     CLI11_PARSE(app, argc, argv);
     std::vector<int> resolutions;
     std::stringstream ss(resList);
     for (std::string item; std::getline(ss, item, ',');) resolutions.push_back(std::stoi(item));
 
-    const Scene scene = loadScene(std::string(VCT_SOURCE_DIR) + "/scenes/cornell_box.gltf");
+    const Scene scene = loadScene(scenePath);
     RenderSession session(scene);
     RenderRequest base;
     base.width = base.height = size;
@@ -79,7 +81,8 @@ int main(int argc, char** argv) {
     RenderRequest ref = base;
     ref.gi = "reference";
     ref.spp = spp;
-    ref.params.set("reference.bounces", std::to_string(bounces + 2));
+    if (!ref.params.has("reference.bounces")) ref.params.set("reference.bounces", std::to_string(bounces + 2));
+    const int reflections = std::stoi(ref.params.values().at("reference.bounces"));
     ref.aovs = {"indirect", "indirect_stderr", "normal", "position"};
     const RenderResult truth = session.render(ref);
     const Image& L = truth.aovs.at("indirect");
@@ -91,7 +94,7 @@ int main(int argc, char** argv) {
     for (size_t i = 0; i < n; ++i) peak = std::max(peak, luminance(L, i));
 
     std::printf("Cornell box, %dx%d, sky 0, VCT %d bounce(s) against the path tracer with %d reflections at %d spp\n",
-                size, size, bounces, bounces + 2, spp);
+                size, size, bounces, reflections, spp);
     std::printf("mean indirect light, VCT against the path tracer (+-: two of its standard errors)\n");
     std::printf("%-6s %16s", "res", "image");
     for (const Surface& s : kSurfaces) std::printf(" %16s", s.name);
@@ -115,7 +118,10 @@ int main(int argc, char** argv) {
                 var += double(se.pixels[i]) * double(se.pixels[i]);  // one channel
             }
             char buf[64];
-            std::snprintf(buf, sizeof buf, "%+6.1f%% +-%4.1f%%", 100.0 * (sv / sl - 1.0), 200.0 * std::sqrt(var) / sl);
+            if (!(sl > 0.0))  // the path tracer finds no light there: no relative deviation
+                std::snprintf(buf, sizeof buf, "VCT %.3g, PT 0", sv);
+            else
+                std::snprintf(buf, sizeof buf, "%+6.1f%% +-%4.1f%%", 100.0 * (sv / sl - 1.0), 200.0 * std::sqrt(var) / sl);
             return std::string(buf);
         };
         double sq = 0.0;
