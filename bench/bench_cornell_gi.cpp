@@ -11,6 +11,7 @@
 //                    [--images DIR] [--scene FILE]
 #include "cone/cone_bounce.h"
 #include "eval/image_io.h"
+#include "eval/metrics.h"
 #include "gl/context.h"
 #include "render/renderer.h"
 #include "scene/camera.h"
@@ -18,6 +19,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -44,10 +46,6 @@ const Surface kSurfaces[] = {{"floor", 1, 1.f, 0.f},
 bool onSurface(const Surface& s, const Image& normal, const Image& position, size_t i) {
     return normal.pixels[i * 3 + size_t(s.axis)] * s.inward > 0.9f &&
            std::abs(position.pixels[i * 3 + size_t(s.axis)] - s.plane) < 0.02f;
-}
-
-double luminance(const Image& img, size_t i) {
-    return (img.pixels[i * 3] + img.pixels[i * 3 + 1] + img.pixels[i * 3 + 2]) / 3.0;
 }
 
 }  // namespace
@@ -85,13 +83,13 @@ int main(int argc, char** argv) {
     const int reflections = std::stoi(ref.params.values().at("reference.bounces"));
     ref.aovs = {"indirect", "indirect_stderr", "normal", "position"};
     const RenderResult truth = session.render(ref);
-    const Image& L = truth.aovs.at("indirect");
-    const Image& se = truth.aovs.at("indirect_stderr");
+    const Image& indirect = truth.aovs.at("indirect");
+    const Image L = channelMean(indirect);
+    const Image& se = truth.aovs.at("indirect_stderr");  // of the channel mean
     const Image& normal = truth.aovs.at("normal");
     const Image& position = truth.aovs.at("position");
     const size_t n = size_t(size) * size_t(size);
-    double peak = 0.0;
-    for (size_t i = 0; i < n; ++i) peak = std::max(peak, luminance(L, i));
+    const double peak = *std::max_element(L.pixels.begin(), L.pixels.end());
 
     std::printf("Cornell box, %dx%d, sky 0, VCT %d bounce(s) against the path tracer with %d reflections at %d spp\n",
                 size, size, bounces, reflections, spp);
@@ -101,21 +99,22 @@ int main(int argc, char** argv) {
     std::printf(" %10s\n", "rmse/peak");
     if (!images.empty()) {
         std::filesystem::create_directories(images);
-        writeImage(images + "/cornell_gi_reference.png", toneMapToSrgb(L));
+        writeImage(images + "/cornell_gi_reference.png", toneMapToSrgb(indirect));
     }
     for (int res : resolutions) {
         RenderRequest r = base;
         r.gi = "vct";
         r.voxelRes = res;
         r.aovs = {"indirect"};
-        const Image V = session.render(r).aovs.at("indirect");
+        const Image vct = session.render(r).aovs.at("indirect");
+        const Image V = channelMean(vct);
         auto deviation = [&](const Surface* s) {
             double sv = 0.0, sl = 0.0, var = 0.0;
             for (size_t i = 0; i < n; ++i) {
                 if (s && !onSurface(*s, normal, position, i)) continue;
-                sv += luminance(V, i);
-                sl += luminance(L, i);
-                var += double(se.pixels[i]) * double(se.pixels[i]);  // one channel
+                sv += V.pixels[i];
+                sl += L.pixels[i];
+                var += double(se.pixels[i]) * double(se.pixels[i]);
             }
             char buf[64];
             if (!(sl > 0.0))  // the path tracer finds no light there: no relative deviation
@@ -124,13 +123,11 @@ int main(int argc, char** argv) {
                 std::snprintf(buf, sizeof buf, "%+6.1f%% +-%4.1f%%", 100.0 * (sv / sl - 1.0), 200.0 * std::sqrt(var) / sl);
             return std::string(buf);
         };
-        double sq = 0.0;
-        for (size_t i = 0; i < n; ++i) sq += std::pow(luminance(V, i) - luminance(L, i), 2);
         std::printf("%-6s %16s", (std::to_string(res) + "^3").c_str(), deviation(nullptr).c_str());
         for (const Surface& s : kSurfaces) std::printf(" %16s", deviation(&s).c_str());
-        std::printf(" %10.4f\n", std::sqrt(sq / double(n)) / peak);
+        std::printf(" %10.4f\n", computeErrorMetrics(V, L).rmse / peak);
         std::fflush(stdout);
-        if (!images.empty()) writeImage(images + "/cornell_gi_vct_" + std::to_string(res) + ".png", toneMapToSrgb(V));
+        if (!images.empty()) writeImage(images + "/cornell_gi_vct_" + std::to_string(res) + ".png", toneMapToSrgb(vct));
     }
     return 0;
 }

@@ -217,26 +217,37 @@ std::vector<AoConvergenceCase> aoConvergenceCases() {
     return cases;
 }
 
-std::vector<double> exactAoAt(const AoConvergenceCase& c) {
+namespace {
+
+// Exact AO and cone-model AO at a case's points for radius R (the case's own for AO, an
+// unbounded one for GI).
+std::vector<double> exactAo(const AoConvergenceCase& c, float radius) {
     std::vector<double> out;
-    for (const glm::vec3& p : c.points) out.push_back(analyticAo(c.occluders, p, glm::vec3(0, 1, 0), c.radius));
+    for (const glm::vec3& p : c.points) out.push_back(analyticAo(c.occluders, p, glm::vec3(0, 1, 0), radius));
     return out;
 }
 
-std::vector<double> coneModelAoAt(const AoConvergenceCase& c, const ParamMap& params) {
+std::vector<double> coneModelAo(const AoConvergenceCase& c, const ParamMap& params, float radius) {
     const ConeSettings cone = readConeSettings(params);
     const std::vector<glm::vec4> set = diffuseConeSet(cone.coneCount);
     std::vector<double> out;
     for (const glm::vec3& p : c.points)
-        out.push_back(analyticConeModelAo(c.occluders, p, glm::vec3(0, 1, 0), c.radius, set, cone.apertureDeg));
+        out.push_back(analyticConeModelAo(c.occluders, p, glm::vec3(0, 1, 0), radius, set, cone.apertureDeg));
     return out;
 }
 
-namespace {
+// The AO radius that stands for an unbounded one: every case's occluders lie within 10 R.
+constexpr float kGiRadius = 1.0e3f;
 
-// The registry's VCT method (--ao vct or --gi vct) at a case's points: a G-buffer of the points
-// (and, on screen, the visible occluder points), of albedo `albedo`; returns the first channel
-// of `out` at the scored points.
+// The light a point gathers from emitters of kGiEmission that cover 1 - ao of its hemisphere.
+std::vector<double> gatheredFromAo(std::vector<double> ao) {
+    for (double& v : ao) v = kGiEmission * (1.0 - v);
+    return ao;
+}
+
+// The registry's VCT method (--ao vct or --gi vct) at a case's points, on a G-buffer of the
+// points (and, on screen, the visible occluder points): the AO, or the indirect light's first
+// channel, at the scored points.
 std::vector<double> vctAt(const AoConvergenceCase& c, int voxelRes, const std::string& backend, const ParamMap& params,
                           bool gi) {
     GlContext& gl = GlContext::shared();
@@ -294,10 +305,13 @@ std::vector<double> vctAt(const AoConvergenceCase& c, int voxelRes, const std::s
     return out;
 }
 
-// The AO radius that stands for an unbounded one: every case's occluders lie within 10 R.
-constexpr float kGiRadius = 1.0e3f;
-
 }  // namespace
+
+std::vector<double> exactAoAt(const AoConvergenceCase& c) { return exactAo(c, c.radius); }
+
+std::vector<double> coneModelAoAt(const AoConvergenceCase& c, const ParamMap& params) {
+    return coneModelAo(c, params, c.radius);
+}
 
 std::vector<double> vctAoAt(const AoConvergenceCase& c, int voxelRes, const std::string& backend,
                             const ParamMap& params) {
@@ -320,21 +334,10 @@ std::vector<AoConvergenceCase> giConvergenceCases() {
     return out;
 }
 
-std::vector<double> exactGiAt(const AoConvergenceCase& c) {
-    std::vector<double> out;
-    for (const glm::vec3& p : c.points)
-        out.push_back(kGiEmission * (1.0 - analyticAo(c.occluders, p, glm::vec3(0, 1, 0), kGiRadius)));
-    return out;
-}
+std::vector<double> exactGiAt(const AoConvergenceCase& c) { return gatheredFromAo(exactAo(c, kGiRadius)); }
 
 std::vector<double> coneModelGiAt(const AoConvergenceCase& c, const ParamMap& params) {
-    const ConeSettings cone = readConeSettings(params);
-    const std::vector<glm::vec4> set = diffuseConeSet(cone.coneCount);
-    std::vector<double> out;
-    for (const glm::vec3& p : c.points)
-        out.push_back(kGiEmission * (1.0 - analyticConeModelAo(c.occluders, p, glm::vec3(0, 1, 0), kGiRadius, set,
-                                                               cone.apertureDeg)));
-    return out;
+    return gatheredFromAo(coneModelAo(c, params, kGiRadius));
 }
 
 std::vector<double> vctGiAt(const AoConvergenceCase& c, int voxelRes, const std::string& backend,
