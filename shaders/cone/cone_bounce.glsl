@@ -2,6 +2,9 @@
 // set (cone_march.glsl: directional mips, facing test, plane limit, saturation): each
 // occupied voxel with a normal gathers the previous bounce's radiance around its normal, so
 // its outgoing radiance becomes L_direct + albedo * sum_c w_c (L_c + (1 - alpha_c) sky).
+// When the scene has emitters (emissive materials, or a sky the bounces see), the first
+// gather reads emission alone (BOUNCE_EMITTED writes it): what emitters throw on a voxel is
+// their direct light, one reflection deep like a punctual light's (src/cone/cone_bounce.h).
 // The weights integrate the cosine lobe and sum to 1, so with albedo < 1 each bounce adds
 // less than the previous one. Voxels whose normals cancel (both faces of a thin wall) keep
 // their direct light: they have no hemisphere to gather over. A two-sided voxel's facing normal
@@ -41,6 +44,19 @@ void main() {
     ivec3 v = ivec3(gl_GlobalInvocationID) + ivec3(0, 0, uSlab.x);
     if (any(greaterThanEqual(v, ivec3(u.gridResolution.xy, uSlab.y))) || !bounce_gathers(v)) return;
     listVoxels[atomicAdd(listCount, 1u)] = uint(v.x) | (uint(v.y) << 10) | (uint(v.z) << 20);
+}
+#elif defined(BOUNCE_EMITTED)
+// Before the first gather of a scene with emitters: the radiance the gather reads is the
+// emission alone, premultiplied by the voxel's coverage as injection's radiance is.
+layout(local_size_x = VOX_GRID_GROUP, local_size_y = VOX_GRID_GROUP, local_size_z = VOX_GRID_GROUP) in;
+layout(binding = CONE_UNIT_BOUNCE_EMISSION) uniform sampler3D bounce_emission;
+layout(RADIANCE_FORMAT, binding = CONE_IMAGE_OUTPUT) uniform writeonly image3D bounce_out;
+
+void main() {
+    ivec3 v = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(v, ivec3(u.gridResolution.xyz)))) return;
+    float a = texelFetch(bounce_direct, v, 0).a;
+    imageStore(bounce_out, v, vec4(texelFetch(bounce_emission, v, 0).rgb * a, a));
 }
 #else
 // Pass 2: voxels not in the list keep their direct light (the output starts as a copy of it).

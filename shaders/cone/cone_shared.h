@@ -36,6 +36,7 @@ VCT_CONST int CONE_UNIT_COLOR = 17;     // rayMarchVoxels: albedo or radiance
 VCT_CONST int CONE_UNIT_NORMAL = 18;    // GI: grid.normal (mipmapped), for the facing test
 VCT_CONST int CONE_UNIT_BOUNCE_DIRECT = 19;  // cone_bounce.glsl: emission + direct light (level 0)
 VCT_CONST int CONE_UNIT_BOUNCE_ALBEDO = 20;  // cone_bounce.glsl: grid.albedo
+VCT_CONST int CONE_UNIT_BOUNCE_EMISSION = 21;  // cone_bounce.glsl: grid.emission (BOUNCE_EMITTED)
 VCT_CONST int CONE_IMAGE_OUTPUT = 0;    // image unit of the output texture
 VCT_CONST int CONE_UBO_BINDING = 0;
 VCT_CONST int CONE_BINDING_COUNTS = 6;      // cone_ao/gi.glsl: per-pixel (samples, fetches)

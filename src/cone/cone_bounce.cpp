@@ -20,11 +20,20 @@ const SettingsTable<BounceSettings>& bounceSettings() {
             .integer("vct.bounces", &BounceSettings::bounces, 0, 8,
                      "extra diffuse bounces traced between voxels (dense and vdb grids; clipmaps inject direct "
                      "light only)")
-            .flag("vct.bounce.sky", &BounceSettings::sky, "bounce cones that escape see the sky radiance");
+            .flag("vct.bounce.sky", &BounceSettings::sky, "bounce cones that escape see the sky radiance")
+            .flag("vct.bounce.emitters", &BounceSettings::emitters,
+                  "emitters' direct light: a scene with emissive materials or a sky the bounces see gathers once "
+                  "more first, from the emission alone, so emitters' light has as many reflections as the lights' "
+                  "(0: emitters' light has one reflection fewer)");
     return table;
 }
 
 int readVctBounces(const ParamMap& params) { return bounceSettings().read(params).bounces; }
+
+int bounceGathers(const BounceSettings& settings, bool emissive, float sky) {
+    const bool emitters = settings.emitters && (emissive || (settings.sky && sky > 0.f));
+    return std::max(settings.bounces, 0) + (emitters ? 1 : 0);
+}
 
 void refuseVctBounces(const ParamMap& params, bool injects, const std::string& where) {
     const int bounces = readVctBounces(params);
@@ -52,9 +61,9 @@ std::vector<VoxelListSlab> voxelListSlabs(const glm::ivec3& res, size_t occupied
 void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, const ParamMap& params,
                        PassTimer& timer) {
     const BounceSettings settings = bounceSettings().read(params);
-    const int bounces = settings.bounces;
     const bool bounceSky = settings.sky;
-    if (bounces == 0) return;
+    const int gathers = bounceGathers(settings, grid.emissive, sky);
+    if (gathers == 0) return;
     if (!grid.radiance || !grid.albedo || !grid.normal)
         throw InternalError("traceVoxelBounces", "the grid has no injected radiance");
     if (!(sky >= 0.f) || !std::isfinite(sky))
@@ -88,7 +97,19 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
         glNamedBufferSubData(slab.list.id(), 0, sizeof(zero), &zero);
         slabs.push_back(std::move(slab));
     }
-    for (int i = 0; i < bounces; ++i) {
+    if (gathers > settings.bounces) {
+        // Emitters: the first gather reads the emission alone (cone_bounce.glsl, BOUNCE_EMITTED).
+        ubo = bindConeUniforms(coneUniforms(true, grid, 2.f * diagonal, bounceSky ? sky : 0.f, cone));
+        glBindTextureUnit(gpu::CONE_UNIT_BOUNCE_DIRECT, direct.id());
+        glBindTextureUnit(gpu::CONE_UNIT_BOUNCE_EMISSION, grid.emission.id());
+        bindImage3D(gpu::CONE_IMAGE_OUTPUT, grid.radiance.id(), 0, GL_WRITE_ONLY, format);
+        glUseProgram(cachedProgram(coneBounceProgramKey(cone.anisotropic, format, BouncePass::Emitted, false)));
+        const int g = gpu::VOX_GRID_GROUP;
+        glDispatchCompute(groupCount(res.x, g), groupCount(res.y, g), groupCount(res.z, g));
+        glMemoryBarrier(GL_ALL_BARRIER_BITS);
+        glBindTextureUnit(gpu::CONE_UNIT_BOUNCE_EMISSION, 0);
+    }
+    for (int i = 0; i < gathers; ++i) {
         // The mips (and the directional textures, rebuilt anew) of the previous total.
         buildMips(grid, cone.anisotropic, mipsTimer, "bounce_mips", wantsDepthLevels(cone));
         ubo = bindConeUniforms(coneUniforms(true, grid, 2.f * diagonal, bounceSky ? sky : 0.f, cone));
@@ -98,7 +119,7 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
         glBindTextureUnit(gpu::CONE_UNIT_BOUNCE_ALBEDO, grid.albedo.id());
         if (i == 0) {
             // Listed once: direct light and normals do not change.
-            const GLuint listPass = cachedProgram(coneBounceProgramKey(aniso, format, true, depth));
+            const GLuint listPass = cachedProgram(coneBounceProgramKey(aniso, format, BouncePass::List, depth));
             glUseProgram(listPass);
             const int g = gpu::VOX_GRID_GROUP;
             for (Slab& slab : slabs) {
@@ -113,7 +134,7 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
         glCopyImageSubData(direct.id(), GL_TEXTURE_3D, 0, 0, 0, 0, next.id(), GL_TEXTURE_3D, 0, 0, 0, 0, res.x, res.y,
                            res.z);
         bindImage3D(gpu::CONE_IMAGE_OUTPUT, next.id(), 0, GL_WRITE_ONLY, format);
-        glUseProgram(cachedProgram(coneBounceProgramKey(aniso, format, false, depth)));
+        glUseProgram(cachedProgram(coneBounceProgramKey(aniso, format, BouncePass::Gather, depth)));
         for (const Slab& slab : slabs) {
             if (slab.listed == 0) continue;
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_VOXEL_LIST, slab.list.id());

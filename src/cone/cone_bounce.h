@@ -2,8 +2,19 @@
 // put emission and direct light into grid.radiance, each bounce gathers the previous total
 // at every occupied voxel with the pixel cones' march and cone set (shaders/cone/
 // cone_bounce.glsl) and re-injects albedo times what it gathered. The direct term stays
-// fixed, so N bounces carry light over N + 1 reflections inside the grid, and the pixel
-// cones add one more: reference.bounces = N + 2 is the bounce-matched reference.
+// fixed, so N bounces carry a punctual light's light over N + 1 reflections inside the grid,
+// and the pixel cones add one more: reference.bounces = N + 2 is the bounce-matched reference.
+//
+// Emitters (emissive surfaces, and the sky when the bounces see it) put their light into the
+// voxels unreflected, so the same N gathers would carry it over one reflection fewer: N + 1
+// with the pixel's, where the path tracer with N + 2 reflections finds more (the Cornell box's
+// ceiling, lit by the panel only through a wall, would stay black without bounces). A scene
+// with emitters therefore gathers once more first, from the emission alone: what the emitters
+// throw on each voxel is their direct light, as injection computes a punctual light's. With
+// L = emission + direct, G a gather and rho the albedo, the voxels leave
+// L + rho G L + ... + (rho G)^N L + (rho G)^(N + 1) emission,
+// every light's paths over at most N + 1 reflections in the grid.
+
 //
 // Keys, defaults, ranges and docs: bounceSettings() (vct.bounces, vct.bounce.sky).
 #pragma once
@@ -43,20 +54,26 @@ std::vector<VoxelListSlab> voxelListSlabs(const glm::ivec3& resolution, size_t o
 
 struct BounceSettings {
     int bounces = kDefaultVctBounces;
-    bool sky = true;  // bounce cones that escape see the sky radiance
+    bool sky = true;       // bounce cones that escape see the sky radiance
+    bool emitters = true;  // emitters' direct light: one gather more first (above)
 };
 const SettingsTable<BounceSettings>& bounceSettings();
 int readVctBounces(const ParamMap& params);  // bounceSettings().read(params).bounces
+
+// The gathers a grid's bounces take: settings.bounces, and one more first when
+// settings.emitters and the grid holds emitters (`emissive` materials, or a `sky` > 0 the
+// bounce cones see). Both backends.
+int bounceGathers(const BounceSettings& settings, bool emissive, float sky);
 
 // For volumes that hold direct light only (clipmaps): reads vct.bounces
 // and, when the volume `injects`, refuses an explicit request for bounces with
 // UsageError naming `where`. The default is not a request.
 void refuseVctBounces(const ParamMap& params, bool injects, const std::string& where);
 
-// Adds readVctBounces(params) bounces to grid.radiance (level 0; mips are rebuilt for each
-// gather and left stale afterwards: call buildMips next). `cone` is the pixel passes'
+// Adds readVctBounces(params) bounces to grid.radiance (bounceGathers gathers; level 0; mips
+// are rebuilt for each gather and left stale afterwards: call buildMips next). `cone` is the pixel passes'
 // settings (cone set, aperture, step, offset, directional mips). Escaping cones see `sky`
-// unless vct.bounce.sky = 0. Timer scope "bounce". No-op for 0 bounces.
+// unless vct.bounce.sky = 0. Timer scope "bounce". No-op when there is nothing to gather.
 void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, const ParamMap& params,
                        PassTimer& timer);
 

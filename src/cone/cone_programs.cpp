@@ -30,13 +30,15 @@ ProgramKey coneResolveProgramKey(bool gi) {
     return computeProgramKey(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl", d);
 }
 
-ProgramKey coneBounceProgramKey(bool aniso, GLenum radianceFormat, bool listPass, bool depthLevels) {
-    // The list pass marches no cones: one variant whatever the levels hold.
+ProgramKey coneBounceProgramKey(bool aniso, GLenum radianceFormat, BouncePass pass, bool depthLevels) {
+    // The list and emission passes march no cones: one variant whatever the levels hold.
+    const bool gathers = pass == BouncePass::Gather;
     ShaderDefines d =
-        coneDefines(true, aniso ? ConeDirectional::Six : ConeDirectional::None, depthLevels && !listPass);
+        coneDefines(true, aniso ? ConeDirectional::Six : ConeDirectional::None, depthLevels && gathers);
     d.push_back({"RADIANCE_FORMAT", glslImageFormat(radianceFormat)});
     d.push_back({"RADIANCE_FORMAT_MAX", formatMaxLiteral(radianceFormat)});
-    if (listPass) d.push_back({"BOUNCE_LIST", "1"});
+    if (pass == BouncePass::List) d.push_back({"BOUNCE_LIST", "1"});
+    if (pass == BouncePass::Emitted) d.push_back({"BOUNCE_EMITTED", "1"});
     return computeProgramKey("cone/cone_bounce.glsl", d);
 }
 
@@ -72,9 +74,10 @@ std::vector<ProgramKey> coneProgramVariants() {
     }
     for (bool aniso : {false, true})
         for (GLenum f : {GLenum(GL_RGBA16F), GLenum(GL_RGBA32F)})
-            for (bool list : {false, true})
-                for (bool depth : {false, true})  // the key ignores depth for the list and without aniso
-                    if (!(depth && (list || !aniso))) v.push_back(coneBounceProgramKey(aniso, f, list, depth));
+            for (BouncePass pass : {BouncePass::List, BouncePass::Emitted, BouncePass::Gather})
+                for (bool depth : {false, true})  // the key ignores depth but for gathers with aniso
+                    if (!(depth && (pass != BouncePass::Gather || !aniso)))
+                        v.push_back(coneBounceProgramKey(aniso, f, pass, depth));
     for (int c : {gpu::CONE_CHANNEL_OPACITY, gpu::CONE_CHANNEL_ALBEDO, gpu::CONE_CHANNEL_RADIANCE})
         v.push_back(voxelViewProgramKey(c));
     v.push_back(fetchBenchProgramKey());

@@ -23,7 +23,10 @@ ProgramKey clipmapConePassProgramKey(bool gi);
 ProgramKey coneResolveProgramKey(bool gi);
 // cone_bounce.glsl: the gather of one bounce (`depthLevels` as above), or (listPass) the
 // list of voxels that gather.
-ProgramKey coneBounceProgramKey(bool aniso, GLenum radianceFormat, bool listPass, bool depthLevels);
+// cone_bounce.glsl's three passes: list the voxels that gather, write the emission alone (the
+// first gather's source in a scene with emitters), gather.
+enum class BouncePass { List, Emitted, Gather };
+ProgramKey coneBounceProgramKey(bool aniso, GLenum radianceFormat, BouncePass pass, bool depthLevels);
 // cone_raymarch.glsl: the voxel_* views; channel is gpu::CONE_CHANNEL_*.
 ProgramKey voxelViewProgramKey(int channel);
 // bench/: the cone pass with a fetch counter, and the bare trilinear-fetch shader.

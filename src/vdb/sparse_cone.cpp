@@ -16,6 +16,7 @@
 #include <openvdb/tree/LeafManager.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
@@ -305,11 +306,15 @@ std::vector<glm::vec3> sparseConeGI(const SparseVoxelScene& voxels, const std::v
     return gi;
 }
 
-void traceSparseBounces(SparseVoxelScene& voxels, float sky, const ConeSettings& settings, int bounces,
-                        bool anisotropic) {
-    if (bounces <= 0) return;
-    if (!voxels.injected() || !voxels.albedo || !voxels.normal)
+void traceSparseBounces(SparseVoxelScene& voxels, float sky, const ConeSettings& settings,
+                        const BounceSettings& bounce, bool anisotropic) {
+    if (!voxels.injected() || !voxels.albedo || !voxels.normal || !voxels.emission)
         throw InternalError("traceSparseBounces", "the sparse voxels have no radiance (inject first)");
+    bool emissive = false;
+    for (auto it = voxels.emission->cbeginValueOn(); it && !emissive; ++it) emissive = it->lengthSqr() > 0.f;
+    const int bounces = std::max(bounce.bounces, 0), gathers = bounceGathers(bounce, emissive, sky);
+    if (!bounce.sky) sky = 0.f;
+    if (gathers == 0) return;
     if (!(sky >= 0.f) || !std::isfinite(sky))
         throw InternalError("traceSparseBounces", "sky radiance " + std::to_string(sky) + " must be finite and >= 0");
     settings.validate();
@@ -318,8 +323,22 @@ void traceSparseBounces(SparseVoxelScene& voxels, float sky, const ConeSettings&
     const openvdb::FloatTree& opacity = voxels.opacity->tree();
     const float maxDist = 2.f * glm::length(glm::vec3(voxels.resolution));
     // Minutes at 1024^3 on a few cores: a bar on a terminal, in leaf nodes of 8^3 voxels.
-    ProgressBar progress("vdb bounces", uint64_t(bounces) * uint64_t(direct->tree().leafCount()), true);
-    for (int bounce = 0; bounce < bounces; ++bounce) {
+    ProgressBar progress("vdb bounces", uint64_t(gathers) * uint64_t(direct->tree().leafCount()), true);
+    if (gathers > bounces) {
+        // Emitters: the first gather reads the emission alone, premultiplied (cone_bounce.h).
+        openvdb::Vec3SGrid::Ptr emitted = direct->deepCopy();
+        openvdb::tree::LeafManager<openvdb::Vec3STree> leaves(emitted->tree());
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.leafCount()), [&](const tbb::blocked_range<size_t>& r) {
+            ConstAcc3 emissionAcc(voxels.emission->tree());
+            OpacityAcc opacityAcc(opacity);
+            for (size_t li = r.begin(); li != r.end(); ++li)
+                for (auto it = leaves.leaf(li).beginValueOn(); it; ++it)
+                    it.setValue(emissionAcc.getValue(it.getCoord()) * opacityAcc.getValue(it.getCoord()));
+        });
+        voxels.radiance = emitted;
+        voxels.radianceLevels = {emitted};
+    }
+    for (int bounce = 0; bounce < gathers; ++bounce) {
         buildSparseLevels(voxels, anisotropic, anisotropic && wantsDepthLevels(settings));
         const MarchParams mp = marchParams(voxels, settings);
         openvdb::Vec3SGrid::Ptr next = direct->deepCopy();

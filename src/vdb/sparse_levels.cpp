@@ -286,8 +286,7 @@ SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject
         injectSparseRadiance(voxels, scene, offset);
         // The bounces trace with the pixel cones' settings, as the GPU path's.
         const auto t0 = std::chrono::steady_clock::now();
-        traceSparseBounces(voxels, bounce.sky ? sky : 0.f, readConeSettings(params), bounce.bounces,
-                           options.anisotropic);
+        traceSparseBounces(voxels, sky, readConeSettings(params), bounce, options.anisotropic);
         voxels.stats.bounceSeconds = secondsSince(t0);
     }
     buildSparseLevels(voxels, options.anisotropic, options.depthLevels);

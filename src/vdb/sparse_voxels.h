@@ -98,7 +98,7 @@ struct SparseVoxelScene {
 // [4, 1024]), optionally injects direct light + emission, and builds the levels. TBB parallel;
 // the result is bit-identical for any thread count. ParamMap keys (shared with the GPU path):
 //   vct.inject.offset    0..16 voxels, default 2: where shadow marches start along the normal.
-//   vct.bounces, vct.bounce.sky: the diffuse bounces between voxels (traceSparseBounces),
+//   vct.bounces, vct.bounce.sky, vct.bounce.emitters: the diffuse bounces between voxels (traceSparseBounces),
 //                        traced with the cone settings of `params`, as the GPU path's.
 //   vct.voxel.precision: read for parity with the GPU path; the sparse grids always hold
 //                        float32.

@@ -166,6 +166,7 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     // Normals carry mips (filled with the radiance's: voxelize/mips.cpp) for the facing test.
     grid.normal = createTexture3D(GL_RGBA16F, res.x, res.y, res.z, grid.levels);
     grid.emission = createTexture3D(emissionFormat, res.x, res.y, res.z);
+    grid.emissive = hasEmission;
     if (twoSided) {
         grid.twoSided = createTexture3D(GL_RGBA16_SNORM, res.x, res.y, res.z);
         bindImage3D(gpu::VOX_IMAGE_RESOLVE_TWO_SIDED, grid.twoSided.id(), 0, GL_WRITE_ONLY, GL_RGBA16_SNORM);

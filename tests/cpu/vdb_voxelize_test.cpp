@@ -204,7 +204,8 @@ TEST(VdbVoxelize, InjectedRadianceIsResolutionIndependent) {
     const glm::vec3 toSun = -s.lights[0].direction;
     for (int res : {32, 64}) {
         ParamMap params;
-        params.set("vct.bounces", "0");  // direct light alone
+        params.set("vct.bounces", "0");  // direct light alone: no gather, not even the emitters'
+        params.set("vct.bounce.emitters", "0");
         SparseVoxelScene v = buildSparseVoxels(s, res, true, 1.f, params);
         glm::vec3 p = (glm::vec3(-3.3f, 0.f, -3.3f) - v.origin) / v.voxelSize;
         openvdb::Coord ijk(int(std::floor(p.x)), int(std::floor(p.y)), int(std::floor(p.z)));
@@ -229,6 +230,7 @@ TEST(VdbVoxelize, BouncesAddLightThatShrinksWithEachBounce) {
     for (const char* bounces : {"0", "1", "2"}) {
         ParamMap params;
         params.set("vct.bounces", bounces);
+        params.set("vct.bounce.emitters", "0");  // the lights' bounces alone (the box top emits)
         v.push_back(buildSparseVoxels(s, 32, true, 0.f, params));
     }
     double total[3] = {0, 0, 0};
@@ -247,6 +249,43 @@ TEST(VdbVoxelize, BouncesAddLightThatShrinksWithEachBounce) {
     EXPECT_GT(total[1], total[0]);
     EXPECT_GT(total[2], total[1]);
     EXPECT_LT(total[2] - total[1], total[1] - total[0]);
+}
+
+// Emitters light the voxels one reflection deep, as a light does: a floor of albedo 0.5 under
+// an emitting plate (radiance 1, facing down, black) of half-side a = 4 at height h = 0.5, no
+// lights, no sky, no bounces. Injection alone leaves the floor black; the emitters' gather
+// gives it albedo * F, F = (2 / pi) (2 X / sqrt(1 + X^2) atan(X / sqrt(1 + X^2))) = 0.987 the
+// plate's view factor from the floor's centre (X = a / h). The plate is a one-voxel sheet:
+// opacity levels pass up to 13.5% of a cone through it (docs/convergence.md), hence the
+// tolerance below.
+TEST(VdbVoxelize, EmittersLightTheVoxelsOneReflectionDeep) {
+    Scene s;
+    const float albedo = 0.5f, a = 4.f, h = 0.5f;
+    const uint32_t floor = vcttest::addMaterial(s, glm::vec3(albedo));
+    const uint32_t glow = vcttest::addMaterial(s, glm::vec3(0.f), glm::vec3(1.f));
+    vcttest::addQuad(s, {-a, 0, -a}, {0, 0, 2 * a}, {2 * a, 0, 0}, floor);  // +y
+    vcttest::addQuad(s, {-a, h, -a}, {2 * a, 0, 0}, {0, 0, 2 * a}, glow);   // -y
+    vcttest::finish(s);
+    const double X = a / h, q = std::sqrt(1.0 + X * X);
+    const double F = 2.0 / kPi * 2.0 * X / q * std::atan(X / q);
+    for (const char* emitters : {"0", "1"}) {
+        ParamMap params;
+        params.set("vct.bounces", "0");
+        params.set("vct.bounce.emitters", emitters);
+        const SparseVoxelScene v = buildSparseVoxels(s, 64, true, 0.f, params);
+        const glm::vec3 p = (glm::vec3(0.f, 0.01f, 0.f) - v.origin) / v.voxelSize;
+        const openvdb::Coord ijk(int(std::floor(p.x)), int(std::floor(p.y)), int(std::floor(p.z)));
+        ASSERT_TRUE(v.opacity->tree().isValueOn(ijk));
+        const float alpha = v.opacity->tree().getValue(ijk);
+        const openvdb::Vec3s L = v.radiance->tree().getValue(ijk) / alpha;
+        for (int c = 0; c < 3; ++c) {
+            if (emitters[0] == '0')
+                EXPECT_EQ(L[c], 0.f);
+            else
+                EXPECT_NEAR(L[c], albedo * F, 0.15 * albedo * F) << "F " << F;
+        }
+        std::printf("[emitters %s] floor voxel radiance %.4f, albedo * F %.4f\n", emitters, L[0], albedo * F);
+    }
 }
 
 // Levels against an independent dense box filter with GL's child ranges.

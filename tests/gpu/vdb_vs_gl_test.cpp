@@ -59,11 +59,13 @@ struct Fixture {
     float sky = 0.5f;
     int res = 64;
 
-    Fixture(bool anisotropic, int bounces) {
+    // emitters: vct.bounce.emitters (off: the voxels hold what injection put there, with no bounces)
+    Fixture(bool anisotropic, int bounces, bool emitters = true) {
         GlContext& gl = GlContext::shared();
         gpu = uploadScene(scene);
         params.set("vct.aniso", anisotropic ? "1" : "0");
         params.set("vct.bounces", std::to_string(bounces));
+        params.set("vct.bounce.emitters", emitters ? "1" : "0");
         const ConeSettings cone = readConeSettings(params);
         grid = voxelizeScene(gpu, scene.bounds, res, params, timer);
         injectRadiance(grid, gpu, scene, params, timer);
@@ -77,7 +79,7 @@ struct Fixture {
 };
 
 Fixture& fixture() {
-    static Fixture f(false, 0);
+    static Fixture f(false, 0, false);
     return f;
 }
 
@@ -223,7 +225,7 @@ Agreement agreement(const Images& im) {
 
 // The directional levels hold what the GPU's anisoRadiance textures hold, level by level.
 TEST(VdbVsGl, DirectionalLevelsMatchTheGpuTextures) {
-    Fixture f(true, 0);
+    Fixture f(true, 0, false);
     ASSERT_TRUE(f.sparse.anisotropic());
     for (int d = 0; d < 6; ++d)
         for (int level = 1; level < std::min(f.grid.levels, 4); ++level) {
@@ -251,8 +253,9 @@ TEST(VdbVsGl, DirectionalLevelsMatchTheGpuTextures) {
         }
 }
 
-// On the GPU path's defaults (directional levels, vct.bounces bounces) the images agree as
-// closely as the isotropic base case's do: one cone march, one bounce rule.
+// On the GPU path's defaults (directional levels, vct.bounces bounces, the emitters' gather:
+// the scene's box top emits and the sky is 1) the images agree as closely as the isotropic
+// base case's do: one cone march, one bounce rule.
 TEST(VdbVsGl, DirectionalLevelsAndBouncesAgree) {
     for (int bounces : {0, 1}) {
         Fixture f(true, bounces);
