@@ -12,7 +12,8 @@
 // its dimmer face shows the sum at the share it shows the direct light.
 //
 // Defines: CONE_GI = 1, CONE_ANISO (as the pixel cones), RADIANCE_FORMAT, RADIANCE_FORMAT_MAX;
-// BOUNCE_LIST for the first of the two passes below.
+// BOUNCE_LIST for the list of gathering voxels, BOUNCE_EMITTED for the emission alone; neither
+// for the gather.
 #include "cone/cone_march.glsl"
 
 layout(std430, binding = CONE_BINDING_VOXEL_LIST) buffer VoxelList {

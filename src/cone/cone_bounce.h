@@ -14,9 +14,9 @@
 // L = emission + direct, G a gather and rho the albedo, the voxels leave
 // L + rho G L + ... + (rho G)^N L + (rho G)^(N + 1) emission,
 // every light's paths over at most N + 1 reflections in the grid.
-
 //
-// Keys, defaults, ranges and docs: bounceSettings() (vct.bounces, vct.bounce.sky).
+// Keys, defaults, ranges and docs: bounceSettings() (vct.bounces, vct.bounce.sky,
+// vct.bounce.emitters).
 #pragma once
 
 #include "cone/cone_settings.h"
@@ -71,8 +71,8 @@ int bounceGathers(const BounceSettings& settings, bool emissive, float sky);
 void refuseVctBounces(const ParamMap& params, bool injects, const std::string& where);
 
 // Adds readVctBounces(params) bounces to grid.radiance (bounceGathers gathers; level 0; mips
-// are rebuilt for each gather and left stale afterwards: call buildMips next). `cone` is the pixel passes'
-// settings (cone set, aperture, step, offset, directional mips). Escaping cones see `sky`
+// are rebuilt for each gather and left stale afterwards: call buildMips next). `cone` is the
+// pixel passes' settings (cone set, aperture, step, offset, directional mips). Escaping cones see `sky`
 // unless vct.bounce.sky = 0. Timer scope "bounce". No-op when there is nothing to gather.
 void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, const ParamMap& params,
                        PassTimer& timer);

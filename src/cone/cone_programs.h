@@ -21,10 +21,9 @@ ProgramKey clipmapConePassProgramKey(bool gi);
 // The resolve stage of a reduced-resolution AO or GI pass (cone_resolve.glsl): one program
 // for every volume, since it marches no cones and reads none.
 ProgramKey coneResolveProgramKey(bool gi);
-// cone_bounce.glsl: the gather of one bounce (`depthLevels` as above), or (listPass) the
-// list of voxels that gather.
 // cone_bounce.glsl's three passes: list the voxels that gather, write the emission alone (the
-// first gather's source in a scene with emitters), gather.
+// first gather's source in a scene with emitters), and the gather of one bounce
+// (`depthLevels` as above; the other two ignore it).
 enum class BouncePass { List, Emitted, Gather };
 ProgramKey coneBounceProgramKey(bool aniso, GLenum radianceFormat, BouncePass pass, bool depthLevels);
 // cone_raymarch.glsl: the voxel_* views; channel is gpu::CONE_CHANNEL_*.
