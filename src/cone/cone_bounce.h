@@ -72,8 +72,9 @@ void refuseVctBounces(const ParamMap& params, bool injects, const std::string& w
 
 // Adds readVctBounces(params) bounces to grid.radiance (bounceGathers gathers; level 0; mips
 // are rebuilt for each gather and left stale afterwards: call buildMips next). `cone` is the
-// pixel passes' settings (cone set, aperture, step, offset, directional mips). Escaping cones see `sky`
-// unless vct.bounce.sky = 0. Timer scope "bounce". No-op when there is nothing to gather.
+// pixel passes' settings (cone set, aperture, step, offset, directional mips). Escaping cones
+// see `sky` unless vct.bounce.sky = 0. Timer scope "bounce". No-op when there is nothing to
+// gather.
 void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, const ParamMap& params,
                        PassTimer& timer);
 

@@ -310,6 +310,8 @@ void traceSparseBounces(SparseVoxelScene& voxels, float sky, const ConeSettings&
                         const BounceSettings& bounce, bool anisotropic) {
     if (!voxels.injected() || !voxels.albedo || !voxels.normal || !voxels.emission)
         throw InternalError("traceSparseBounces", "the sparse voxels have no radiance (inject first)");
+    // Emitters by their voxels (the dense grid goes by its materials: a material that emits
+    // nowhere in the grid adds a gather of zero emission there, which changes nothing).
     bool emissive = false;
     for (auto it = voxels.emission->cbeginValueOn(); it && !emissive; ++it) emissive = it->lengthSqr() > 0.f;
     const int bounces = std::max(bounce.bounces, 0), gathers = bounceGathers(bounce, emissive, sky);

@@ -39,15 +39,15 @@ std::vector<float> sparseConeAO(const SparseVoxelScene& voxels, const std::vecto
 std::vector<glm::vec3> sparseConeGI(const SparseVoxelScene& voxels, const std::vector<SparsePoint>& points,
                                     float sky, const ConeSettings& settings, ConeCost* cost = nullptr);
 
-// `bounce.bounces` further diffuse bounces between the voxels (shaders/cone/cone_bounce.glsl): each
-// occupied level-0 voxel with a normal gathers the previous total around its normal with the
+// `bounce.bounces` further diffuse bounces between the voxels (shaders/cone/cone_bounce.glsl):
+// each occupied level-0 voxel with a normal gathers the previous total around its normal with the
 // pixel cones' march, so its radiance becomes direct + albedo * sum_c w_c (L_c + (1 - alpha_c)
 // sky), the cones starting offset + 0.5 voxels out (the voxel's surface may lie half a voxel
 // from its centre); escaping cones see `sky` unless bounce.sky is off. A scene with emitters
 // (emission, or a sky the cones see) gathers once more first, from the emission alone
-// (bounceGathers, cone_bounce.h). Rebuilds the levels (directional
-// ones when `anisotropic`) before each gather from the previous one; the caller builds the
-// final levels. Requires injected radiance.
+// (bounceGathers, cone_bounce.h). Rebuilds the levels (directional ones when `anisotropic`)
+// before each gather from the previous one; the caller builds the final levels. Requires
+// injected radiance.
 void traceSparseBounces(SparseVoxelScene& voxels, float sky, const ConeSettings& settings,
                         const BounceSettings& bounce, bool anisotropic);
 

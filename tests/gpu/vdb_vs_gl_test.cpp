@@ -254,8 +254,8 @@ TEST(VdbVsGl, DirectionalLevelsMatchTheGpuTextures) {
 }
 
 // On the GPU path's defaults (directional levels, vct.bounces bounces, the emitters' gather:
-// the scene's box top emits and the sky is 1) the images agree as closely as the isotropic
-// base case's do: one cone march, one bounce rule.
+// the scene's glowing box emits and the sky is 0.5) the images agree as closely as the
+// isotropic base case's do: one cone march, one bounce rule.
 TEST(VdbVsGl, DirectionalLevelsAndBouncesAgree) {
     for (int bounces : {0, 1}) {
         Fixture f(true, bounces);
