@@ -75,6 +75,8 @@ convergence: build
 		--markdown docs/convergence_vdb_lanes.md
 	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend gl --param vct.lanes=0 --param vct.grid=cube \
 		--param vct.opacity=depth --markdown docs/convergence_gl_lanes_depth.md
+	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend gl --param vct.aniso=0 --markdown docs/convergence_gl_iso.md
+	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend vdb --param vct.aniso=0 --markdown docs/convergence_vdb_iso.md
 	$(MAKE) convergence-gi
 
 convergence-gi: build
@@ -86,8 +88,10 @@ convergence-gi: build
 		--markdown docs/convergence_gi_gl_lanes.md
 	./$(BUILD)/bench_convergence --gi --res 32,64,128,256 --backend gl --param vct.lanes=0 --param vct.grid=cube \
 		--param vct.opacity=depth --markdown docs/convergence_gi_gl_lanes_depth.md
-	./$(BUILD)/bench_cornell_gi --res 32,64,128,256 > docs/cornell_gi.txt.tmp
-	./$(BUILD)/bench_cornell_gi --res 32,64,128,256 --param vct.opacity=depth >> docs/cornell_gi.txt.tmp
+	./$(BUILD)/bench_convergence --gi --res 32,64,128,256 --backend gl --param vct.aniso=0 \
+		--markdown docs/convergence_gi_gl_iso.md
+	./$(BUILD)/bench_cornell_gi --res 32,64,128,256 --cone-model > docs/cornell_gi.txt.tmp
+	./$(BUILD)/bench_cornell_gi --res 32,64,128,256 --cone-model --param vct.opacity=depth >> docs/cornell_gi.txt.tmp
 	mv docs/cornell_gi.txt.tmp docs/cornell_gi.txt
 
 clean:

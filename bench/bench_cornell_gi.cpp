@@ -5,10 +5,13 @@
 // mean, and the RMSE over the peak, per voxel resolution. A surface is the set of pixels whose
 // G-buffer normal faces into the box from that wall and whose position lies on it (the boxes'
 // faces are left out). --images writes each image (and the path tracer's) as PNG, to look for
-// streaks and leaks.
+// streaks and leaks. --cone-model adds a first row, "cones": the path tracer's cone model of
+// VCT's cone set (reference.cone-model, every reflection gathered over the cone set's caps),
+// what VCT converges to as its voxels refine; its deviation is the cone error, and VCT's
+// distance from it the voxel error.
 //
 //   bench_cornell_gi [--res 32,64,128] [--size 96] [--spp 1024] [--param KEY=VALUE ...]
-//                    [--images DIR] [--scene FILE]
+//                    [--images DIR] [--scene FILE] [--cone-model]
 #include "cone/cone_bounce.h"
 #include "eval/image_io.h"
 #include "eval/metrics.h"
@@ -60,6 +63,8 @@ int main(int argc, char** argv) {
     app.add_option("--spp", spp, "path tracer samples per pixel")->capture_default_str();
     app.add_option("--param", params, "KEY=VALUE for VCT (repeatable)");
     app.add_option("--images", images, "write the images as PNG into this directory");
+    bool coneModel = false;
+    app.add_flag("--cone-model", coneModel, "also score the path tracer's cone model of VCT's cone set (the cone error)");
     app.add_option("--scene", scenePath, "the Cornell box or a variant of it (its walls where they are: other lights, "
                                          "materials or boxes)");
     CLI11_PARSE(app, argc, argv);
@@ -101,13 +106,8 @@ int main(int argc, char** argv) {
         std::filesystem::create_directories(images);
         writeImage(images + "/cornell_gi_reference.png", toneMapToSrgb(indirect));
     }
-    for (int res : resolutions) {
-        RenderRequest r = base;
-        r.gi = "vct";
-        r.voxelRes = res;
-        r.aovs = {"indirect"};
-        const Image vct = session.render(r).aovs.at("indirect");
-        const Image V = channelMean(vct);
+    // One row: an image's mean indirect light per surface against the path tracer's.
+    auto printRow = [&](const std::string& label, const Image& V) {
         auto deviation = [&](const Surface* s) {
             double sv = 0.0, sl = 0.0, var = 0.0;
             for (size_t i = 0; i < n; ++i) {
@@ -123,10 +123,27 @@ int main(int argc, char** argv) {
                 std::snprintf(buf, sizeof buf, "%+6.1f%% +-%4.1f%%", 100.0 * (sv / sl - 1.0), 200.0 * std::sqrt(var) / sl);
             return std::string(buf);
         };
-        std::printf("%-6s %16s", (std::to_string(res) + "^3").c_str(), deviation(nullptr).c_str());
+        std::printf("%-6s %16s", label.c_str(), deviation(nullptr).c_str());
         for (const Surface& s : kSurfaces) std::printf(" %16s", deviation(&s).c_str());
         std::printf(" %10.4f\n", computeErrorMetrics(V, L).rmse / peak);
         std::fflush(stdout);
+    };
+    if (coneModel) {
+        RenderRequest cm = ref;
+        cm.seed = ref.seed + 1;  // its own noise, not the truth's
+        cm.params.set("reference.cone-model", "1");
+        cm.aovs = {"indirect"};
+        const Image model = session.render(cm).aovs.at("indirect");
+        printRow("cones", channelMean(model));
+        if (!images.empty()) writeImage(images + "/cornell_gi_cone_model.png", toneMapToSrgb(model));
+    }
+    for (int res : resolutions) {
+        RenderRequest r = base;
+        r.gi = "vct";
+        r.voxelRes = res;
+        r.aovs = {"indirect"};
+        const Image vct = session.render(r).aovs.at("indirect");
+        printRow(std::to_string(res) + "^3", channelMean(vct));
         if (!images.empty()) writeImage(images + "/cornell_gi_vct_" + std::to_string(res) + ".png", toneMapToSrgb(vct));
     }
     return 0;

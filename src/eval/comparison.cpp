@@ -230,6 +230,7 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
     } else {
         doc["roi_pixels"] = nullptr;
     }
+    RenderRequest giRef;  // the path tracer's request (its cone models', too)
     if (anyGi) {
         RenderRequest g = s.base;
         g.ao = kNoMethod;
@@ -238,6 +239,7 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
         g.aovs = {"indirect", "indirect_stderr"};
         say("reference GI: " + std::to_string(s.referenceSpp) + " spp");
         RenderResult gr = session.render(g);
+        giRef = g;
         refGi = gr.aovs.at("indirect");
         refGiStderr = gr.aovs.at("indirect_stderr");
         refJson["gi_mean_stderr"] = gr.extra["reference_gi"]["mean_stderr"];
@@ -270,14 +272,16 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
     doc["reference"] = refJson;
     if (write) writeImage(path("error_legend.png"), falseColorLegend(256, 16, 1.0));
 
-    // The cone model of a cone-tracing variant's cone set, by the reference's rays: what the
-    // variant converges to as its voxels refine. One per distinct cone set.
+    // The cone model of a cone-tracing variant's cone set, by the reference's rays (AO) or
+    // paths (GI): what the variant converges to as its voxels refine. One per distinct cone
+    // set and kind.
     std::map<std::string, Image> coneModels;
     auto coneModelFor = [&](const MethodVariant& v) -> const Image& {
-        RenderRequest c = ref;
-        c.aovs = {"ao"};
+        const bool ao = v.kind == "ao";
+        RenderRequest c = ao ? ref : giRef;
+        c.aovs = {ao ? "ao" : "indirect"};
         c.params.set("reference.cone-model", "1");
-        std::string key;
+        std::string key = v.kind + ":";
         for (const char* k : {"vct.cones", "vct.aperture", "vct.jitter"}) {
             std::string value;
             if (auto it = v.params.find(k); it != v.params.end()) value = it->second;
@@ -289,7 +293,7 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
         auto found = coneModels.find(key);
         if (found != coneModels.end()) return found->second;
         say("cone model of " + v.label() + ": " + std::to_string(s.referenceSpp) + " spp");
-        return coneModels.emplace(key, session.render(c).aovs.at("ao")).first->second;
+        return coneModels.emplace(key, session.render(c).aovs.at(c.aovs.front())).first->second;
     };
 
     doc["records"] = nlohmann::json::array();
@@ -344,7 +348,7 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
         }
         // Total error = cone error (the cone set's) + voxel error (the voxels' alone).
         const Method* method = findMethod(isAo ? MethodKind::AO : MethodKind::GI, v.method);
-        if (isAo && method && method->tracesCones) {
+        if (method && method->tracesCones) {
             const Image& model = coneModelFor(v);
             rec["cone_error_rmse"] = computeErrorMetrics(model, truth, &valid, -1, peak).rmse;
             rec["voxel_error_rmse"] = computeErrorMetrics(est, model, &valid, -1, peak).rmse;

@@ -5,6 +5,9 @@
 // uniform in its cap: the fraction of such rays left open is A_cones. As the cone passes do,
 // a cone whose axis lies below the geometric plane is closed, and the part of a cone below
 // the plane is open (the cones never see the surface they start from).
+// GI's cone model replaces the cosine lobe of a diffuse reflection by the same sampling:
+// L_gathered = sum_c w_c (mean of L_in over cone c's cap), what the cone passes' sum_c w_c L_c
+// converges to; an open direction below the plane sees the sky, a closed cone gathers nothing.
 #pragma once
 
 #include "common/tangent_frame.h"
@@ -47,11 +50,7 @@ public:
         // stays stratified.
         const float lo = c == 0 ? 0.f : mCdf[c - 1];
         const float ux = (u.x - lo) / std::max(mCdf[c] - lo, 1e-12f);
-        glm::mat3 frame = gpu::frame_fromZ(n);
-        if (rotation != 0.f) {
-            const float cr = std::cos(rotation), sr = std::sin(rotation);
-            frame = frame * glm::mat3(cr, sr, 0.f, -sr, cr, 0.f, 0.f, 0.f, 1.f);
-        }
+        const glm::mat3 frame = frameOf(n, rotation);
         const glm::vec3 axis = glm::normalize(frame * glm::vec3(mCones[c]));
         ConeModelSample s;
         if (glm::dot(axis, ng) <= 0.f) {
@@ -65,7 +64,34 @@ public:
         return s;
     }
 
+    // The density over directions of sample()'s open, above-plane directions: the sum over the
+    // open cones whose cap holds w of w_c / (the cap's solid angle), weights normalised as
+    // sample() picks them. GI's cone model uses it as both the lobe and its pdf (for MIS
+    // against emitter sampling); 0 below the plane and outside every open cap.
+    float density(const glm::vec3& w, const glm::vec3& n, const glm::vec3& ng, float rotation = 0.f) const {
+        if (mCones.empty() || glm::dot(w, ng) <= 0.f) return 0.f;
+        const glm::mat3 frame = frameOf(n, rotation);
+        const float capSolidAngle = 2.f * 3.14159265358979f * (1.f - mCosHalf);
+        float sum = 0.f;
+        for (size_t c = 0; c < mCones.size(); ++c) {
+            const glm::vec3 axis = glm::normalize(frame * glm::vec3(mCones[c]));
+            if (glm::dot(axis, ng) <= 0.f || glm::dot(w, axis) < mCosHalf) continue;
+            sum += mCdf[c] - (c == 0 ? 0.f : mCdf[c - 1]);
+        }
+        return sum / capSolidAngle;
+    }
+
 private:
+    // The cone set's frame about n, turned by `rotation` (cone_common.glsl's frame).
+    static glm::mat3 frameOf(const glm::vec3& n, float rotation) {
+        glm::mat3 frame = gpu::frame_fromZ(n);
+        if (rotation != 0.f) {
+            const float cr = std::cos(rotation), sr = std::sin(rotation);
+            frame = frame * glm::mat3(cr, sr, 0.f, -sr, cr, 0.f, 0.f, 0.f, 1.f);
+        }
+        return frame;
+    }
+
     std::vector<glm::vec4> mCones;
     std::vector<float> mCdf;
     std::vector<float> mRotations;

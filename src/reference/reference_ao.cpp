@@ -53,8 +53,9 @@ const SettingsTable<ReferenceSettings>& referenceSettings() {
                      "GI: Russian roulette from this bounce on")
             .choice("reference.ray-mode", &ReferenceSettings::rayMode, modes, "how occlusion rays are handed to Embree")
             .flag("reference.cone-model", &ReferenceSettings::coneModel,
-                  "AO of VCT's cone model (the cone set of vct.cones and vct.aperture, exact visibility in each "
-                  "cone) instead of the hemisphere: what VCT converges to as its voxels refine")
+                  "VCT's cone model (the cone set of vct.cones and vct.aperture, exact visibility and radiance in "
+                  "each cone) instead of the hemisphere, for AO and for GI's every reflection: what VCT converges "
+                  "to as its voxels refine")
             .choice("reference.pixel", &ReferenceSettings::pixelArea, {{"center", false}, {"area", true}},
                     "reference: AO at the G-buffer's pixel centres, or averaged over the pixel with jittered "
                     "primary rays (box filter, as Cycles)");

@@ -115,6 +115,9 @@ struct PathTracer {
     const Scene& s;
     const EmitterTable& emitters;
     const ReferenceSettings& settings;
+    // GI's cone model (cone_model.h) in place of the cosine lobe at every reflection, or
+    // empty: the rendering equation.
+    const ConeModelSampler& cones;
 
     // Dimension pairs of the sampler: 0 = pixel jitter; bounce b uses 1 + 3b (light choice,
     // roulette), 2 + 3b (point on the emitter), 3 + 3b (BSDF direction).
@@ -124,7 +127,9 @@ struct PathTracer {
         return replicatedSample(stream, replicates, uint32_t(dimPair), index);
     }
 
-    PathResult trace(const CameraRay& cr, uint64_t stream, uint32_t index) const {
+    // `rotation`: the cone model's turn of the cone set at the first reflection (vct.jitter's
+    // per-pixel turn; the bounces' gathers never turn it).
+    PathResult trace(const CameraRay& cr, uint64_t stream, uint32_t index, float rotation = 0.f) const {
         PathResult out;
         uint32_t tri;
         float u, v, t;
@@ -144,6 +149,8 @@ struct PathTracer {
             if (maxComponent(albedo) <= 0.f) break;
             const glm::vec3 origin = offsetRayOrigin(h.position, h.geomNormal, h.errorScale);
             const glm::vec3 f = albedo * kInvPi;
+            const bool model = !cones.empty();
+            const float turn = bounce == 0 ? rotation : 0.f;
             glm::vec2 uChoice = sample(stream, 1 + 3 * bounce, index);
 
             // Next-event estimation: every punctual light.
@@ -170,28 +177,43 @@ struct PathTracer {
                     glm::vec3 wi = d / std::sqrt(dist2);
                     SurfaceHit lh = scene.surfaceAt(lt, b.y, b.z, wi);  // normals face p
                     float cosL = -glm::dot(lh.geomNormal, wi);
-                    float cosS = glm::dot(h.shadingNormal, wi);
-                    if (cosS > 0.f && cosL > 0.f && glm::dot(h.geomNormal, wi) > 0.f) {
+                    // The lobe: cos / pi, or the cone model's density (which is also its pdf).
+                    float lobe = model ? cones.density(wi, h.shadingNormal, h.geomNormal, turn)
+                                       : std::max(glm::dot(h.shadingNormal, wi), 0.f) * kInvPi;
+                    if (lobe > 0.f && cosL > 0.f && glm::dot(h.geomNormal, wi) > 0.f) {
                         float pdfLight = emitters.areaPdf[lt] * dist2 / cosL;
                         glm::vec3 le = emissionTowardRay(s, lh);
                         if (maxComponent(le) > 0.f && pdfLight > 0.f && std::isfinite(pdfLight)) {
                             glm::vec3 end = offsetRayOrigin(lh.position, lh.geomNormal, lh.errorScale);
                             ++out.rays;
                             if (!scene.occluded(origin, end - origin, 1.f)) {
-                                float w = powerHeuristic(pdfLight, cosS * kInvPi);
-                                out.indirect += throughput * f * le * (cosS * w / pdfLight);
+                                float w = powerHeuristic(pdfLight, lobe);
+                                out.indirect += throughput * albedo * le * (lobe * w / pdfLight);
                             }
                         }
                     }
                 }
             }
 
-            // BSDF sampling: cosine-weighted, so f cos / pdf = albedo.
-            glm::vec3 wi = Frame::fromZ(h.shadingNormal)
-                               .toWorld(sampleCosineHemisphere(sample(stream, 3 + 3 * bounce, index)));
-            float cosG = glm::dot(wi, h.geomNormal);
-            if (cosG <= 0.f) break;  // below the surface
-            float pdfBsdf = glm::dot(wi, h.shadingNormal) * kInvPi;
+            // BSDF sampling: cosine-weighted, so f cos / pdf = albedo; the cone model samples
+            // its own lobe, so lobe / pdf = 1 as well.
+            glm::vec3 wi;
+            float pdfBsdf;
+            if (model) {
+                const ConeModelSample c =
+                    cones.sample(sample(stream, 3 + 3 * bounce, index), h.shadingNormal, h.geomNormal, turn);
+                if (c.closed) break;  // a closed cone gathers nothing
+                if (c.belowPlane) {   // open: the cone never sees its own surface, so the sky
+                    out.indirect += throughput * albedo * settings.sky;
+                    break;
+                }
+                wi = c.direction;
+                pdfBsdf = cones.density(wi, h.shadingNormal, h.geomNormal, turn);
+            } else {
+                wi = Frame::fromZ(h.shadingNormal).toWorld(sampleCosineHemisphere(sample(stream, 3 + 3 * bounce, index)));
+                if (glm::dot(wi, h.geomNormal) <= 0.f) break;  // below the surface
+                pdfBsdf = glm::dot(wi, h.shadingNormal) * kInvPi;
+            }
             throughput *= albedo;
             ++out.rays;
             if (!scene.intersect(origin, wi, 0.f, kInf, &tri, &u, &v, &t)) {
@@ -227,7 +249,7 @@ float spotAttenuation(const Light& light, float cosAngle) {
 }
 
 ReferenceGI referenceGI(const EmbreeScene& scene, const View& view, const ReferenceSettings& settings,
-                        bool pixelArea) {
+                        bool pixelArea, const ConeModelSampler& cones) {
     settings.validate();
     if (view.width <= 0 || view.height <= 0) throw InternalError("referenceGI", "empty view");
     const Scene& s = scene.scene();
@@ -238,7 +260,7 @@ ReferenceGI referenceGI(const EmbreeScene& scene, const View& view, const Refere
     const EmitterTable emitters(s);
     const SampleSchedule schedule = sampleSchedule(settings.spp, settings.replicates);
     const int K = schedule.replicates;
-    const PathTracer tracer{scene, s, emitters, settings, K};
+    const PathTracer tracer{scene, s, emitters, settings, cones, K};
 
     const int W = view.width, H = view.height;
     const size_t n = size_t(W) * size_t(H);
@@ -296,7 +318,7 @@ ReferenceGI referenceGI(const EmbreeScene& scene, const View& view, const Refere
                 for (int k = done; k < total; ++k) {
                     glm::vec2 jitter = pixelArea ? tracer.sample(stream, 0, uint32_t(k)) : glm::vec2(0.5f);
                     PathResult p = tracer.trace(cameraRay(view, float(x) + jitter.x, float(y) + jitter.y), stream,
-                                                uint32_t(k));
+                                                uint32_t(k), cones.rotationOf(i));
                     localRays += p.rays;
                     ++acc.samples;
                     if (!p.hit) continue;
@@ -358,9 +380,10 @@ ReferenceGI referenceGI(const EmbreeScene& scene, const View& view, const Refere
     return out;
 }
 
-ReferenceGI referenceGI(const Scene& scene, const View& view, const ReferenceSettings& settings, bool pixelArea) {
+ReferenceGI referenceGI(const Scene& scene, const View& view, const ReferenceSettings& settings, bool pixelArea,
+                        const ConeModelSampler& cones) {
     EmbreeScene embree(scene);
-    return referenceGI(embree, view, settings, pixelArea);
+    return referenceGI(embree, view, settings, pixelArea, cones);
 }
 
 }  // namespace vct

@@ -16,6 +16,11 @@
 //   maxdepth), so a closed box of albedo rho and emission Le converges to
 //   sum_{k=0..B} rho^k Le; Russian roulette from `rouletteBounce` on divides by the
 //   survival probability, so it adds noise, not bias.
+// - `cones` not empty: GI's cone model (cone_model.h), what voxel cone tracing converges to
+//   as its voxels refine: every reflection gathers over the cone set's caps (weights w_c,
+//   directions uniform in each cap) instead of the cosine lobe, emitter sampling weighted by
+//   the same lobe; an open direction below the surface's plane sees the sky, a closed cone
+//   nothing. Punctual lights keep their shadow rays, as the voxels' injection does.
 // Outputs, RGB, top row first:
 //   emission  Le of the first surface seen;
 //   direct    light reaching the eye after exactly one reflection from punctual lights;
@@ -27,6 +32,7 @@
 #pragma once
 
 #include "image/image.h"
+#include "reference/cone_model.h"
 #include "reference/embree_scene.h"
 #include "reference/reference_ao.h"
 #include "core/view.h"
@@ -49,11 +55,12 @@ struct ReferenceGI {
 };
 
 // `pixelArea` jitters primary rays over each pixel (box filter); otherwise they go through
-// the pixel centres, like the G-buffer.
+// the pixel centres, like the G-buffer. `cones` (its rotations by pixel, top row first): the
+// cone model.
 ReferenceGI referenceGI(const EmbreeScene& scene, const View& view, const ReferenceSettings& settings,
-                        bool pixelArea = false);
+                        bool pixelArea = false, const ConeModelSampler& cones = {});
 ReferenceGI referenceGI(const Scene& scene, const View& view, const ReferenceSettings& settings,
-                        bool pixelArea = false);
+                        bool pixelArea = false, const ConeModelSampler& cones = {});
 
 // Spot light angular attenuation of the glTF KHR_lights_punctual spec (squared smoothstep-
 // like ramp); `cosAngle` is between the spot direction and the direction light -> point.

@@ -34,25 +34,31 @@ std::vector<SurfacePoint> surfacePoints(const GBuffer& g) {
     return pts;
 }
 
+// The cone model of the request's cone set (vct.cones, vct.aperture, vct.jitter) for a w x h
+// image, or an empty sampler when reference.cone-model is off.
+ConeModelSampler coneModelOf(const RenderRequest& request, const ReferenceSettings& settings, int w, int h) {
+    ConeModelSampler cones;
+    if (!settings.coneModel) return cones;
+    const ConeSettings c = readConeSettings(request.params);
+    cones = ConeModelSampler(diffuseConeSet(c.coneCount), c.apertureDeg);
+    if (c.jitter) {
+        // The images run top row first; the cone passes' pixels are GL's, bottom row 0.
+        const uint32_t seed = coneJitterSeed(request.seed);
+        std::vector<float> rotations(size_t(w) * size_t(h));
+        for (int row = 0; row < h; ++row)
+            for (int x = 0; x < w; ++x)
+                rotations[size_t(row) * size_t(w) + size_t(x)] = gpu::cone_jitterAngle(uint32_t(x), uint32_t(h - 1 - row), seed);
+        cones.setRotations(std::move(rotations));
+    }
+    return cones;
+}
+
 void executeAo(MethodContext& ctx) {
     if (!ctx.plan.runs(kPassReferenceAo)) return;
     const ReferenceSettings settings = settingsOf(ctx.request);
-    ConeModelSampler cones;
-    if (settings.coneModel) {
-        if (settings.pixelArea) throw UsageError("--param reference.cone-model=1 needs reference.pixel=center");
-        const ConeSettings c = readConeSettings(ctx.request.params);
-        cones = ConeModelSampler(diffuseConeSet(c.coneCount), c.apertureDeg);
-        if (c.jitter) {
-            // The points run top row first; the cone passes' pixels are GL's, bottom row 0.
-            const int w = ctx.gbuffer->width, h = ctx.gbuffer->height;
-            const uint32_t seed = coneJitterSeed(ctx.request.seed);
-            std::vector<float> rotations(size_t(w) * size_t(h));
-            for (int row = 0; row < h; ++row)
-                for (int x = 0; x < w; ++x)
-                    rotations[size_t(row) * size_t(w) + size_t(x)] = gpu::cone_jitterAngle(uint32_t(x), uint32_t(h - 1 - row), seed);
-            cones.setRotations(std::move(rotations));
-        }
-    }
+    if (settings.coneModel && settings.pixelArea)
+        throw UsageError("--param reference.cone-model=1 needs reference.pixel=center for --ao reference");
+    const ConeModelSampler cones = coneModelOf(ctx.request, settings, ctx.gbuffer->width, ctx.gbuffer->height);
     const EmbreeScene& embree = sessionEmbreeScene(ctx);
     auto scope = ctx.timer.scope("reference_ao", false);
     ReferenceAO ao = settings.pixelArea ? referenceAOPixelArea(embree, ctx.view, settings) : [&] {
@@ -74,14 +80,16 @@ void executeGi(MethodContext& ctx) {
     const ReferenceSettings settings = settingsOf(ctx.request);
     const EmbreeScene& embree = sessionEmbreeScene(ctx);
     auto scope = ctx.timer.scope("reference_gi", false);
-    ReferenceGI gi = referenceGI(embree, ctx.view, settings, settings.pixelArea);
+    const ConeModelSampler cones = coneModelOf(ctx.request, settings, ctx.view.width, ctx.view.height);
+    ReferenceGI gi = referenceGI(embree, ctx.view, settings, settings.pixelArea, cones);
     ctx.outputs.setImage(kGiIndirect, gi.indirect);
     ctx.outputs.setImage(kDirect, gi.direct);
     ctx.outputs.setImage(kBeauty, gi.beauty);
     // One channel: the mean of the RGB standard errors.
     ctx.outputs.setImage(kIndirectStderr, channelMean(gi.indirectStderr));
     ctx.extra["reference_gi"] = {{"spp", gi.sppUsed}, {"mean_stderr", gi.meanStderr}, {"rays", gi.raysTraced},
-                                 {"rays_per_second", gi.raysPerSecond}, {"bounces", settings.bounces}};
+                                 {"rays_per_second", gi.raysPerSecond}, {"bounces", settings.bounces},
+                                 {"model", settings.coneModel ? "cones" : "hemisphere"}};
 }
 
 }  // namespace

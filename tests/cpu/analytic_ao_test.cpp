@@ -1,12 +1,15 @@
 // The analytic AO quadrature (eval/analytic_ao.h) that scores VCT's convergence, checked
 // against closed forms and against the Embree reference (an independent path), and the
-// cone model: its Monte Carlo form in the reference agrees with its quadrature, and refining
-// the cone set drives it toward the exact AO.
+// cone model: its Monte Carlo form in the reference (AO, and GI's paths) agrees with its
+// quadrature, and refining the cone set drives it toward the exact AO.
 #include "cone/cone_set.h"
 #include "cone/cone_settings.h"
 #include "eval/analytic_ao.h"
 #include "eval/convergence.h"
 #include "reference/reference_ao.h"
+#include "reference/camera_rays.h"
+#include "reference/reference_gi.h"
+#include "core/view.h"
 
 #include <gtest/gtest.h>
 
@@ -79,6 +82,63 @@ TEST(AnalyticAo, TheReferencesConeModelIsTheQuadraturesConeModel) {
             }
         }
     }
+}
+
+// GI's cone model in the path tracer (reference.cone-model on --gi reference) against the
+// quadrature's: with the occluders emitting 1 from both faces, a floor of albedo 1, a black
+// sky and one reflection, a floor point's indirect light is 1 minus the cone model's AO with
+// an unbounded radius. The floor points are the pixels of a low camera that sees them under
+// the occluder. The same pixels' exact values differ from the cone model by the cone set's own
+// error, which the path tracer must not reproduce.
+TEST(AnalyticAo, TheGiReferencesConeModelIsTheQuadraturesConeModel) {
+    constexpr float kUnbounded = 1.0e3f;
+    int scored = 0;
+    for (int cones : {6, 16}) {
+        const std::vector<glm::vec4> set = diffuseConeSet(cones);
+        const float aperture = defaultConeAperture(cones);
+        for (AoConvergenceCase c : giConvergenceCases()) {
+            if (c.name != "plate h=0.5R a=2R gi" && c.name != "disc h=0.7R r=0.3R gi") continue;
+            for (Material& m : c.scene.materials)
+                if (m.name != "occluder") m.baseColorFactor = glm::vec4(1.f);
+            Camera cam;
+            cam.eye = {0.f, 0.2f * c.radius, 3.f * c.radius};
+            cam.target = {0.f, 0.f, 0.f};
+            cam.yfov = 0.35f;
+            const View view = makeView(cam, 12, 12);
+            ReferenceSettings s;
+            s.spp = 1024;
+            s.bounces = 1;
+            s.sky = 0.f;
+            s.progress = false;
+            const ReferenceGI gi = referenceGI(c.scene, view, s, false, ConeModelSampler(set, aperture));
+            double modelErr2 = 0.0, exactErr2 = 0.0;
+            int n = 0;
+            for (int y = 0; y < view.height; ++y)
+                for (int x = 0; x < view.width; ++x) {
+                    const CameraRay ray = cameraRay(view, float(x) + 0.5f, float(y) + 0.5f);
+                    if (ray.direction.y >= -1e-3f) continue;
+                    const float t = -ray.origin.y / ray.direction.y;
+                    const glm::vec3 p = ray.origin + t * ray.direction;
+                    if (c.occluders.occludes(ray.origin, ray.direction, t * 0.999f)) continue;
+                    if (std::abs(p.x) > 2.f * c.radius || std::abs(p.z) > 2.f * c.radius) continue;
+                    const double model =
+                        kGiEmission * (1.0 - analyticConeModelAo(c.occluders, p, kUp, kUnbounded, set, aperture, 96));
+                    const double exact = kGiEmission * (1.0 - analyticAo(c.occluders, p, kUp, kUnbounded, 256));
+                    const double mc = gi.indirect.at(x, y, 0), se = gi.indirectStderr.at(x, y, 0);
+                    EXPECT_NEAR(mc, model, 4.0 * se + 5e-3) << c.name << " " << cones << " pixel " << x << "," << y;
+                    modelErr2 += (mc - model) * (mc - model);
+                    exactErr2 += (mc - exact) * (mc - exact);
+                    ++n;
+                }
+            ASSERT_GT(n, 20) << c.name;
+            scored += n;
+            const double toModel = std::sqrt(modelErr2 / n), toExact = std::sqrt(exactErr2 / n);
+            std::printf("[ %s, %d cones ] %d floor pixels: RMS to the cone model %.4f, to the exact %.4f\n",
+                        c.name.c_str(), cones, n, toModel, toExact);
+            if (cones == 6 && c.name == "plate h=0.5R a=2R gi") EXPECT_LT(2.0 * toModel, toExact);
+        }
+    }
+    EXPECT_GT(scored, 80);
 }
 
 TEST(AnalyticAo, RefiningTheConeSetDrivesTheConeErrorDown) {

@@ -190,6 +190,18 @@ TEST(Integration, OffscreenGiSeparatesScreenAndWorldSpace) {
         std::cerr << name << " roi pixels " << doc["roi_pixels_gi"] << " of " << valid << ", roi_rmse vct " << vct
                   << " ssil " << ssil << "\n";
         EXPECT_LT(vct, ssil);
+        // The split of a cone-tracing variant's error by the path tracer's cone model: RMSEs
+        // over the same pixels, so the total is at most cone error + voxel error (the
+        // triangle inequality), which fails if either were measured against another image.
+        const nlohmann::json& v = record(doc, "vct");
+        ASSERT_TRUE(v["cone_error_rmse"].is_number());
+        ASSERT_TRUE(v["voxel_error_rmse"].is_number());
+        const double cone = v["cone_error_rmse"].get<double>(), voxel = v["voxel_error_rmse"].get<double>();
+        std::cerr << name << " GI rmse " << v["rmse"] << " = cone " << cone << " + voxel " << voxel << "\n";
+        EXPECT_GT(cone, 0.0);
+        EXPECT_GT(voxel, 0.0);
+        EXPECT_LE(v["rmse"].get<double>(), cone + voxel + 1e-9);
+        EXPECT_TRUE(record(doc, "ssil")["cone_error_rmse"].is_null());
     }
 }
 
