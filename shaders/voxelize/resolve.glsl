@@ -1,19 +1,22 @@
 // Turns the fixed-point sums of voxelize.glsl into the float textures of the VoxelGrid
 // contract: opacity (1 where any triangle overlaps), weighted-average albedo, unit normal
 // and emission, and (TWO_SIDED) the unit normal with the doubleSided share of the weight
-// (voxelize_shared.h: two-sided voxels). Counts occupied voxels.
+// (voxelize_shared.h: two-sided voxels). Counts occupied voxels. OPACITY_ONLY (a grid for AO):
+// opacity alone, from the weight accumulator.
 #include "voxelize/voxelize_shared.h"
 
 layout(local_size_x = VOX_GRID_GROUP, local_size_y = VOX_GRID_GROUP, local_size_z = VOX_GRID_GROUP) in;
 
 // The accumulators are read through texture units (texelFetch; up to 14 of the 16 guaranteed
 // per stage), so the only images are the four or five outputs: GL guarantees 8 image units.
+#ifndef OPACITY_ONLY
 layout(binding = VOX_ACC_ALBEDO + 0) uniform usampler3D accAlbedoR;
 layout(binding = VOX_ACC_ALBEDO + 1) uniform usampler3D accAlbedoG;
 layout(binding = VOX_ACC_ALBEDO + 2) uniform usampler3D accAlbedoB;
 layout(binding = VOX_ACC_NORMAL + 0) uniform usampler3D accNormalX;
 layout(binding = VOX_ACC_NORMAL + 1) uniform usampler3D accNormalY;
 layout(binding = VOX_ACC_NORMAL + 2) uniform usampler3D accNormalZ;
+#endif
 layout(binding = VOX_ACC_WEIGHT) uniform usampler3D accWeight;
 #ifdef TWO_SIDED
 layout(binding = VOX_ACC_TWO_SIDED) uniform usampler3D accTwoSided;
@@ -28,9 +31,11 @@ layout(binding = VOX_ACC_EMISSION + 5) uniform usampler3D accEmissionBHi;
 #endif
 
 layout(r16f, binding = VOX_IMAGE_RESOLVE_OPACITY) uniform writeonly image3D outOpacity;
+#ifndef OPACITY_ONLY
 layout(rgba16f, binding = VOX_IMAGE_RESOLVE_ALBEDO) uniform writeonly image3D outAlbedo;
 layout(rgba16f, binding = VOX_IMAGE_RESOLVE_NORMAL) uniform writeonly image3D outNormal;
 layout(EMISSION_FORMAT, binding = VOX_IMAGE_RESOLVE_EMISSION) uniform writeonly image3D outEmission;
+#endif
 #ifdef TWO_SIDED
 // xyz = the unit normal (the winding side, kept for every later injection), w = the share of
 // the weight whose material is doubleSided.
@@ -61,15 +66,19 @@ void main() {
     uint w = texelFetch(accWeight, v, 0).r;
     if (w == 0u) {
         imageStore(outOpacity, v, vec4(0.0));
+#ifndef OPACITY_ONLY
         imageStore(outAlbedo, v, vec4(0.0));
         imageStore(outNormal, v, vec4(0.0));
         imageStore(outEmission, v, vec4(0.0));
+#endif
 #ifdef TWO_SIDED
         imageStore(outTwoSided, v, vec4(0.0));
 #endif
         return;
     }
     atomicAdd(bigHeader.w, 1u);
+    imageStore(outOpacity, v, vec4(1.0));
+#ifndef OPACITY_ONLY
     float weight = float(w);
     vec3 albedo = vec3(texelFetch(accAlbedoR, v, 0).r, texelFetch(accAlbedoG, v, 0).r, texelFetch(accAlbedoB, v, 0).r) /
                   (weight * VOX_ALBEDO_SCALE);
@@ -85,10 +94,10 @@ void main() {
              vox_emission(texelFetch(accEmissionGLo, v, 0).r, texelFetch(accEmissionGHi, v, 0).r, weight),
              vox_emission(texelFetch(accEmissionBLo, v, 0).r, texelFetch(accEmissionBHi, v, 0).r, weight));
 #endif
-    imageStore(outOpacity, v, vec4(1.0));
     imageStore(outAlbedo, v, vec4(albedo, 1.0));
     imageStore(outNormal, v, vec4(n, 1.0));
     imageStore(outEmission, v, vec4(e, 1.0));
+#endif
 #ifdef TWO_SIDED
     imageStore(outTwoSided, v, vec4(n, float(texelFetch(accTwoSided, v, 0).r) / weight));
 #endif

@@ -157,6 +157,8 @@ void vox_accumulate(Tri tri, ivec3 v) {
     vec3 e = clamp(scene_emission(tri.material, uv, tri.lod), 0.0, VOX_EMISSION_MAX);
     for (int c = 0; c < 3; ++c)
         if (e[c] > 0.0) vox_add64(c, v, e[c] * float(w) * VOX_EMISSION_SCALE);
+#elif defined(OPACITY_ONLY)
+    imageAtomicAdd(accWeight, v, w);
 #else
     vec3 n = b.x * tri.n[0] + b.y * tri.n[1] + b.z * tri.n[2];
     float len = length(n);

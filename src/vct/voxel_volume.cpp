@@ -105,7 +105,11 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
     if (levels > 0 && cone.opacity == ConeOpacity::Depth)
         throw UsageError("--param vct.opacity=depth: clipmaps keep isotropic levels only (vct.clipmap.levels=" +
                          std::to_string(levels) + "); use the dense grid or the sparse backend");
+    // AO reads opacity alone: its grid keeps no albedo, normal or emission (voxelize.h), unless
+    // a lit pass, the GI cones or a voxel view of the same render reads them.
+    const bool attributes = inject || ctx.plan.runs(kPassConeGi) || ctx.plan.runs(kPassVoxelView);
     std::string key = voxelGridKey(r, inject, aniso) + ";region=" + boundsKey(region.bounds);
+    if (!attributes) key += ";opacity-only";
     if (aniso && wantsDepthLevels(cone)) key += ";depth";
     // A clipmap is its layout: the cascades' origins snap to their voxels, so a camera moving
     // less than a snap step keeps the same cascades (the same voxels), a larger move builds new ones.
@@ -145,7 +149,8 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
         ctx.runCounts["mips"]++;
         if (r.reuseSceneData) keepBounded(cache.clipmaps, cache.order, key, v.clipmap);
     } else if (levels == 0 && !v.grid) {
-        v.grid = std::make_shared<VoxelGrid>(voxelizeScene(ctx.gpu, region.bounds, r.voxelRes, r.params, ctx.timer, inject));
+        v.grid = std::make_shared<VoxelGrid>(
+            voxelizeScene(ctx.gpu, region.bounds, r.voxelRes, r.params, ctx.timer, inject, attributes));
         gl.checkErrors("voxelize");
         ctx.runCounts["voxelize"]++;
         lightAndFilter(ctx, *v.grid, cone, inject, aniso);

@@ -4,18 +4,24 @@
 
 namespace vct {
 
-ProgramKey voxelizeProgramKey(bool emissionPass, bool bigPass, bool twoSided) {
+ProgramKey voxelizeProgramKey(bool emissionPass, bool bigPass, bool twoSided, bool opacityOnly) {
     ShaderDefines d;
     if (bigPass) d.push_back({"BIG_PASS", "1"});
-    if (twoSided && !emissionPass) d.push_back({"TWO_SIDED", "1"});
+    if (twoSided && !emissionPass && !opacityOnly) d.push_back({"TWO_SIDED", "1"});
+    if (opacityOnly && !emissionPass) d.push_back({"OPACITY_ONLY", "1"});
     // One source per pass, each declaring only the images it binds.
     return computeProgramKey(emissionPass ? "voxelize/voxelize_emission.glsl" : "voxelize/voxelize.glsl", d);
 }
 
-ProgramKey resolveProgramKey(bool hasEmission, GLenum emissionFormat, bool twoSided) {
+ProgramKey resolveProgramKey(bool hasEmission, GLenum emissionFormat, bool twoSided, bool opacityOnly) {
     ShaderDefines d;
-    if (hasEmission) d.push_back({"HAS_EMISSION", "1"});
-    if (twoSided) d.push_back({"TWO_SIDED", "1"});
+    if (opacityOnly) {
+        d.push_back({"OPACITY_ONLY", "1"});
+        emissionFormat = GL_RGBA16F;  // no emission is written: one variant
+    } else {
+        if (hasEmission) d.push_back({"HAS_EMISSION", "1"});
+        if (twoSided) d.push_back({"TWO_SIDED", "1"});
+    }
     d.push_back({"EMISSION_FORMAT", glslImageFormat(emissionFormat)});
     d.push_back({"EMISSION_FORMAT_MAX", formatMaxLiteral(emissionFormat)});
     return computeProgramKey("voxelize/resolve.glsl", d);
@@ -54,7 +60,9 @@ std::vector<ProgramKey> voxelProgramVariants() {
     for (bool big : {false, true}) {
         v.push_back(voxelizeProgramKey(true, big, false));
         for (bool twoSided : {false, true}) v.push_back(voxelizeProgramKey(false, big, twoSided));
+        v.push_back(voxelizeProgramKey(false, big, false, true));
     }
+    v.push_back(resolveProgramKey(false, GL_RGBA16F, false, true));
     for (bool emission : {false, true})
         for (GLenum f : radianceFormats)
             for (bool twoSided : {false, true}) v.push_back(resolveProgramKey(emission, f, twoSided));

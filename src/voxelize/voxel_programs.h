@@ -9,11 +9,13 @@
 namespace vct {
 
 // voxelize.glsl or voxelize_emission.glsl: the geometry or the emission accumulation, small or
-// big-triangle pass; the geometry pass sums the doubleSided weight when `twoSided`.
-ProgramKey voxelizeProgramKey(bool emissionPass, bool bigPass, bool twoSided);
+// big-triangle pass; the geometry pass sums the doubleSided weight when `twoSided`, and only
+// the weight when `opacityOnly` (an AO grid).
+ProgramKey voxelizeProgramKey(bool emissionPass, bool bigPass, bool twoSided, bool opacityOnly = false);
 // resolve.glsl: reads the emission accumulators when the scene has emission; writes emission
-// in `emissionFormat` (GL_RGBA16F or GL_RGBA32F); `twoSided`: the two-sided texture too.
-ProgramKey resolveProgramKey(bool hasEmission, GLenum emissionFormat, bool twoSided);
+// in `emissionFormat` (GL_RGBA16F or GL_RGBA32F); `twoSided`: the two-sided texture too;
+// `opacityOnly`: opacity alone (an AO grid).
+ProgramKey resolveProgramKey(bool hasEmission, GLenum emissionFormat, bool twoSided, bool opacityOnly = false);
 // inject.glsl: radiance in `radianceFormat`; `outerLevels` clipmap levels continue shadow rays;
 // `twoSided`: two-sided voxels lit on each face (voxelize_shared.h).
 ProgramKey injectProgramKey(GLenum radianceFormat, int outerLevels, bool twoSided);

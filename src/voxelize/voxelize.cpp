@@ -82,25 +82,26 @@ void accumulateTriangles(const GpuScene& scene, const VoxelGrid& grid, const GlB
 }  // namespace
 
 VoxelGrid voxelizeScene(const GpuScene& scene, const Bounds3& region, int voxelRes, const ParamMap& params,
-                        PassTimer& timer, bool lit) {
+                        PassTimer& timer, bool lit, bool attributes) {
     for (int a = 0; a < 3; ++a)
         if (!std::isfinite(region.min[a]) || !std::isfinite(region.max[a]))
             throw InternalError("voxelizeScene", "region bounds are not finite");
-    return voxelizeGrid(scene, makeGridLayout(region, voxelRes), params, timer, "voxelize", lit);
+    return voxelizeGrid(scene, makeGridLayout(region, voxelRes), params, timer, "voxelize", lit, attributes);
 }
 
 VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& params, PassTimer& timer,
-                       const std::string& scopeName, bool lit) {
+                       const std::string& scopeName, bool lit, bool attributes) {
     VoxelGrid grid = makeGridLayout(layout.origin, layout.voxelSize, layout.resolution);
     const MaterialNeeds needs = materialNeeds(scene);
-    const bool twoSided = needs.doubleSided && lit;
+    const bool twoSided = needs.doubleSided && lit && attributes;
     // Refuse a grid this machine cannot hold, before allocating: llvmpipe keeps textures in system
     // memory and an oversized one ends in the OOM killer, not GL_OUT_OF_MEMORY. ~66 bytes per
     // voxel at the peak (accumulators, albedo, normal, radiance, directional mips): 4.4 GB RSS
     // measured at 512x257x512 (stability suite); lit grids of scenes with doubleSided materials
-    // add the doubleSided weight (4) and the two-sided texture (8).
+    // add the doubleSided weight (4) and the two-sided texture (8); a grid of opacity alone
+    // (no attributes) about 16 (the weight, opacity and directional levels).
     const double voxels = double(grid.resolution.x) * grid.resolution.y * grid.resolution.z;
-    const double needBytes = (twoSided ? 78.0 : 66.0) * voxels, haveBytes = double(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
+    const double needBytes = (!attributes ? 16.0 : twoSided ? 78.0 : 66.0) * voxels, haveBytes = double(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
     if (haveBytes > 0.0 && needBytes > 0.5 * haveBytes)
         throw std::runtime_error("voxel grid " + std::to_string(grid.resolution.x) + "x" +
                                  std::to_string(grid.resolution.y) + "x" + std::to_string(grid.resolution.z) +
@@ -108,18 +109,18 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
                                  "this machine's " + std::to_string(int(haveBytes / 1e9)) +
                                  " GB: lower --voxel-res or use vct.clipmap.levels");
     const VoxelPrecision precision = voxelSettings().read(params).precision;
-    const float maxEmission = needs.maxEmission;
+    const float maxEmission = attributes ? needs.maxEmission : 0.f;
     const bool hasEmission = maxEmission > 0.f;
     const bool useFloat = precision == VoxelPrecision::Float ||
                           (precision == VoxelPrecision::Auto && maxEmission > HALF_SAFE_MAX);
     const GLenum emissionFormat = useFloat ? GL_RGBA32F : GL_RGBA16F;
 
     // Programs first, so a first-use compile is not timed as voxelization.
-    const GLuint resolve = cachedProgram(resolveProgramKey(hasEmission, emissionFormat, twoSided));
+    const GLuint resolve = cachedProgram(resolveProgramKey(hasEmission, emissionFormat, twoSided, !attributes));
     GLuint accumulate[2][2] = {};  // [emission pass][big pass]
     for (int e = 0; e < (hasEmission ? 2 : 1); ++e)
         for (int big = 0; big < 2; ++big)
-            accumulate[e][big] = cachedProgram(voxelizeProgramKey(e != 0, big != 0, twoSided));
+            accumulate[e][big] = cachedProgram(voxelizeProgramKey(e != 0, big != 0, twoSided, !attributes));
 
     auto scope = timer.scope(scopeName, true, Reruns::WhenSceneChanges);
     const glm::ivec3 res = grid.resolution;
@@ -128,6 +129,7 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     // the scene does not need (emission, the doubleSided weight) stay empty.
     std::vector<GlTexture> acc(size_t(gpu::VOX_ACC_COUNT));
     auto needed = [&](int i) {
+        if (!attributes) return i == gpu::VOX_ACC_WEIGHT;
         if (i == gpu::VOX_ACC_TWO_SIDED) return twoSided;
         return i < gpu::VOX_ACC_EMISSION || hasEmission;
     };
@@ -162,10 +164,12 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
 
     // Resolve into the contract's float textures.
     grid.opacity = createTexture3D(GL_R16F, res.x, res.y, res.z, grid.levels);
-    grid.albedo = createTexture3D(GL_RGBA16F, res.x, res.y, res.z);
-    // Normals carry mips (filled with the radiance's: voxelize/mips.cpp) for the facing test.
-    grid.normal = createTexture3D(GL_RGBA16F, res.x, res.y, res.z, grid.levels);
-    grid.emission = createTexture3D(emissionFormat, res.x, res.y, res.z);
+    if (attributes) {
+        grid.albedo = createTexture3D(GL_RGBA16F, res.x, res.y, res.z);
+        // Normals carry mips (filled with the radiance's: voxelize/mips.cpp) for the facing test.
+        grid.normal = createTexture3D(GL_RGBA16F, res.x, res.y, res.z, grid.levels);
+        grid.emission = createTexture3D(emissionFormat, res.x, res.y, res.z);
+    }
     grid.emissive = hasEmission;
     if (twoSided) {
         grid.twoSided = createTexture3D(GL_RGBA16_SNORM, res.x, res.y, res.z);
@@ -174,9 +178,11 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     for (int i = 0; i < gpu::VOX_ACC_COUNT; ++i)
         if (acc[size_t(i)]) glBindTextureUnit(GLuint(i), acc[size_t(i)].id());
     bindImage3D(gpu::VOX_IMAGE_RESOLVE_OPACITY, grid.opacity.id(), 0, GL_WRITE_ONLY, GL_R16F);
-    bindImage3D(gpu::VOX_IMAGE_RESOLVE_ALBEDO, grid.albedo.id(), 0, GL_WRITE_ONLY, GL_RGBA16F);
-    bindImage3D(gpu::VOX_IMAGE_RESOLVE_NORMAL, grid.normal.id(), 0, GL_WRITE_ONLY, GL_RGBA16F);
-    bindImage3D(gpu::VOX_IMAGE_RESOLVE_EMISSION, grid.emission.id(), 0, GL_WRITE_ONLY, emissionFormat);
+    if (attributes) {
+        bindImage3D(gpu::VOX_IMAGE_RESOLVE_ALBEDO, grid.albedo.id(), 0, GL_WRITE_ONLY, GL_RGBA16F);
+        bindImage3D(gpu::VOX_IMAGE_RESOLVE_NORMAL, grid.normal.id(), 0, GL_WRITE_ONLY, GL_RGBA16F);
+        bindImage3D(gpu::VOX_IMAGE_RESOLVE_EMISSION, grid.emission.id(), 0, GL_WRITE_ONLY, emissionFormat);
+    }
     setUniform(resolve, "uResolution", res);
     glUseProgram(resolve);
     const int g = gpu::VOX_GRID_GROUP;

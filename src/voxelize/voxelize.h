@@ -26,15 +26,18 @@ namespace vct {
 // order independent (integer atomics), so the same input gives the same grid bit for bit.
 // Fills opacity (level 0; 1 where any triangle overlaps), albedo, normal, emission,
 // occupiedVoxels and memoryBytes; `lit` (the grid will be lit by injectRadiance) also the
-// two-sided texture where a material is doubleSided, which only injection reads. Timer scope
-// "voxelize".
+// two-sided texture where a material is doubleSided, which only injection reads. Without
+// `attributes` (a grid for AO, which reads opacity alone) albedo, normal and emission stay
+// empty and only the weight is accumulated, one accumulator instead of seven or more: Sponza's
+// AO grid at 512^3 with its directional levels holds 99 MB instead of 827 and voxelizes in a
+// third of the time, the same AO bit for bit. Timer scope "voxelize".
 VoxelGrid voxelizeScene(const GpuScene& scene, const Bounds3& region, int voxelRes,
-                        const ParamMap& params, PassTimer& timer, bool lit = true);
+                        const ParamMap& params, PassTimer& timer, bool lit = true, bool attributes = true);
 
 // The same into a given layout (makeGridLayout; textures of `layout` are ignored): clipmap
 // levels whose origins and voxel sizes must nest exactly. Timer scope `scopeName`.
 VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& params, PassTimer& timer,
-                       const std::string& scopeName = "voxelize", bool lit = true);
+                       const std::string& scopeName = "voxelize", bool lit = true, bool attributes = true);
 
 // Writes grid.radiance level 0: premultiplied (L * opacity, opacity), where L = emission +
 // albedo / pi * sum of the punctual lights' irradiance on the voxel's average normal, each

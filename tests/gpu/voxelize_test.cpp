@@ -294,6 +294,47 @@ TEST(Voxelize, TwoRunsGiveIdenticalBytes) {
     }
 }
 
+// A grid for AO (no attributes) keeps opacity alone: the same opacity and directional levels
+// bit for bit as the full grid of the same scene (emissive and doubleSided materials
+// included, whose passes it skips), no albedo, normal or emission, and a fraction of the
+// memory.
+TEST(Voxelize, AGridForAoHoldsTheSameOpacityAndNothingElse) {
+    TestScene t;
+    std::mt19937 rng(5);
+    for (int m = 0; m < 4; ++m) t.addMaterial(randomPoint(rng, 0.f, 1.f), m == 1 ? glm::vec3(3.f) : glm::vec3(0.f));
+    t.scene.materials[2].doubleSided = true;
+    std::uniform_int_distribution<int> mat(0, 3);
+    for (int i = 0; i < 600; ++i) {
+        glm::vec3 c = randomPoint(rng, -1.f, 1.f);
+        float s = i % 10 == 0 ? 1.f : 0.1f;
+        t.addTriangle(c, c + randomPoint(rng, -s, s), c + randomPoint(rng, -s, s), mat(rng));
+    }
+    GpuScene gpu = upload(t.scene);
+    PassTimer timer;
+    VoxelGrid full = voxelizeScene(gpu, t.scene.bounds, 48, ParamMap(), timer, false, true);
+    VoxelGrid ao = voxelizeScene(gpu, t.scene.bounds, 48, ParamMap(), timer, false, false);
+    for (VoxelGrid* g : {&full, &ao}) buildMips(*g, true, timer);
+    GlContext::shared().checkErrors("voxelize for AO");
+    EXPECT_FALSE(ao.albedo);
+    EXPECT_FALSE(ao.normal);
+    EXPECT_FALSE(ao.emission);
+    EXPECT_TRUE(full.albedo && full.normal && full.emission);
+    EXPECT_EQ(ao.occupiedVoxels, full.occupiedVoxels);
+    EXPECT_GT(ao.occupiedVoxels, 1000u);
+    for (int level = 0; level < full.levels; ++level) {
+        const Volume a = readVolume(full.opacity, level, 1), b = readVolume(ao.opacity, level, 1);
+        ASSERT_EQ(a.data.size(), b.data.size());
+        EXPECT_EQ(a.data, b.data) << "opacity level " << level;
+    }
+    ASSERT_TRUE(full.anisoOpacity && ao.anisoOpacity);
+    const std::vector<uint8_t> da = readRawBytes(full.anisoOpacity, GL_RGBA, GL_HALF_FLOAT, 8),
+                               db = readRawBytes(ao.anisoOpacity, GL_RGBA, GL_HALF_FLOAT, 8);
+    ASSERT_EQ(da.size(), db.size());
+    EXPECT_EQ(std::memcmp(da.data(), db.data(), da.size()), 0);
+    std::printf("[ AO grid ] %zu bytes against %zu with attributes\n", ao.memoryBytes, full.memoryBytes);
+    EXPECT_LT(ao.memoryBytes * 4, full.memoryBytes);
+}
+
 TEST(Voxelize, AlbedoOfTwoTrianglesSharingVoxelsIsTheirMean) {
     TestScene t;
     glm::vec3 a(0.8f, 0.2f, 0.1f), b(0.2f, 0.6f, 0.9f);
