@@ -120,7 +120,7 @@ void nestLevel(const VoxelGrid& fine, VoxelGrid& coarse, const glm::ivec3& fineO
 }  // namespace
 
 Clipmap buildClipmap(const GpuScene& gpuScene, const Scene& scene, const ClipmapLayout& layout, bool inject,
-                     const ParamMap& params, PassTimer& timer) {
+                     const ParamMap& params, PassTimer& timer, bool attributes) {
     const int n = layout.levelCount;
     if (n < 1 || int(layout.originIndex.size()) != n) throw InternalError("buildClipmap", "layout has no levels");
     Clipmap cm;
@@ -130,7 +130,8 @@ Clipmap buildClipmap(const GpuScene& gpuScene, const Scene& scene, const Clipmap
     const glm::ivec3 res(layout.resolution);
     for (int l = 0; l < n; ++l)
         cm.levels[size_t(l)] = voxelizeGrid(gpuScene, makeGridLayout(layout.origin(l), layout.voxelSize(l), res),
-                                            params, timer, "voxelize_l" + std::to_string(l), inject);
+                                            params, timer, "voxelize_l" + std::to_string(l), inject,
+                                            attributes || inject);
     if (inject) {
         for (int l = 0; l < n; ++l) {
             std::vector<const VoxelGrid*> outer;

@@ -68,9 +68,10 @@ struct Clipmap {
 
 // Voxelizes every level, injects radiance when `inject` (shadow rays leaving a level continue
 // through the coarser ones), nests and builds mips. Timer scopes voxelize_lN, inject_lN,
-// mips_lN (nesting counts with the mips).
+// mips_lN (nesting counts with the mips). Without `attributes` and `inject` (AO) the levels
+// hold opacity alone (voxelizeScene).
 Clipmap buildClipmap(const GpuScene& gpuScene, const Scene& scene, const ClipmapLayout& layout, bool inject,
-                     const ParamMap& params, PassTimer& timer);
+                     const ParamMap& params, PassTimer& timer, bool attributes = true);
 
 // Cone traced AO / indirect diffuse over a clipmap: the contracts of coneTraceAO and
 // coneTraceGI (cone/cone_trace.h), isotropic mips whatever settings.anisotropic says.

@@ -142,7 +142,7 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
         // Bounce cones would run inside one level and take its border for the sky: clipmap
         // levels hold direct light only.
         refuseVctBounces(r.params, inject, "vct.clipmap.levels");
-        v.clipmap = std::make_shared<Clipmap>(buildClipmap(ctx.gpu, ctx.scene, layout, inject, r.params, ctx.timer));
+        v.clipmap = std::make_shared<Clipmap>(buildClipmap(ctx.gpu, ctx.scene, layout, inject, r.params, ctx.timer, attributes));
         gl.checkErrors("clipmap");
         ctx.runCounts["voxelize"]++;
         if (inject) ctx.runCounts["inject"]++;
