@@ -266,16 +266,23 @@ TEST(Voxelize, RandomTiltedTrianglesHaveNoHoles) {
 
 // ---- determinism and averages ------------------------------------------------------------
 
-TEST(Voxelize, TwoRunsGiveIdenticalBytes) {
+// `count` random triangles in [-1, 1]^3 over `materials` random albedos, every tenth big (the
+// big-triangle pass) and the others of size `small`; material `emissive` emits `emission`.
+TestScene randomSoup(uint32_t seed, int materials, int count, float small, int emissive, glm::vec3 emission) {
     TestScene t;
-    std::mt19937 rng(11);
-    for (int m = 0; m < 8; ++m) t.addMaterial(randomPoint(rng, 0.f, 1.f), m == 3 ? glm::vec3(5.f, 2.f, 0.5f) : glm::vec3(0.f));
-    std::uniform_int_distribution<int> mat(0, 7);
-    for (int i = 0; i < 3000; ++i) {
+    std::mt19937 rng(seed);
+    for (int m = 0; m < materials; ++m) t.addMaterial(randomPoint(rng, 0.f, 1.f), m == emissive ? emission : glm::vec3(0.f));
+    std::uniform_int_distribution<int> mat(0, materials - 1);
+    for (int i = 0; i < count; ++i) {
         glm::vec3 c = randomPoint(rng, -1.f, 1.f);
-        float s = i % 10 == 0 ? 1.f : 0.08f;
+        float s = i % 10 == 0 ? 1.f : small;
         t.addTriangle(c, c + randomPoint(rng, -s, s), c + randomPoint(rng, -s, s), mat(rng));
     }
+    return t;
+}
+
+TEST(Voxelize, TwoRunsGiveIdenticalBytes) {
+    TestScene t = randomSoup(11, 8, 3000, 0.08f, 3, glm::vec3(5.f, 2.f, 0.5f));
     GpuScene gpu = upload(t.scene);
     std::array<std::vector<uint8_t>, 4> first;
     for (int run = 0; run < 2; ++run) {
@@ -299,16 +306,8 @@ TEST(Voxelize, TwoRunsGiveIdenticalBytes) {
 // included, whose passes it skips), no albedo, normal or emission, and a fraction of the
 // memory.
 TEST(Voxelize, AGridForAoHoldsTheSameOpacityAndNothingElse) {
-    TestScene t;
-    std::mt19937 rng(5);
-    for (int m = 0; m < 4; ++m) t.addMaterial(randomPoint(rng, 0.f, 1.f), m == 1 ? glm::vec3(3.f) : glm::vec3(0.f));
+    TestScene t = randomSoup(5, 4, 600, 0.1f, 1, glm::vec3(3.f));
     t.scene.materials[2].doubleSided = true;
-    std::uniform_int_distribution<int> mat(0, 3);
-    for (int i = 0; i < 600; ++i) {
-        glm::vec3 c = randomPoint(rng, -1.f, 1.f);
-        float s = i % 10 == 0 ? 1.f : 0.1f;
-        t.addTriangle(c, c + randomPoint(rng, -s, s), c + randomPoint(rng, -s, s), mat(rng));
-    }
     GpuScene gpu = upload(t.scene);
     PassTimer timer;
     VoxelGrid full = voxelizeScene(gpu, t.scene.bounds, 48, ParamMap(), timer, false, true);
