@@ -282,6 +282,11 @@ SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject
     const BounceSettings bounce = bounceSettings().read(params);
     SparseVoxelScene voxels =
         voxelizeSparse(scene, options.region.empty() ? scene.bounds : options.region, voxelRes, inject);
+    if (!inject && !options.attributes) {
+        voxels.albedo.reset();
+        voxels.normal.reset();
+        voxels.emission.reset();
+    }
     if (inject) {
         injectSparseRadiance(voxels, scene, offset);
         // The bounces trace with the pixel cones' settings, as the GPU path's.
@@ -298,7 +303,8 @@ SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject
             openvdb::tools::prune(l.opacity->tree());
             if (l.radiance) openvdb::tools::prune(l.radiance->tree());
         }
-    for (auto* g : {&voxels.albedo, &voxels.normal, &voxels.emission}) openvdb::tools::prune((*g)->tree());
+    for (auto* g : {&voxels.albedo, &voxels.normal, &voxels.emission})
+        if (*g) openvdb::tools::prune((*g)->tree());
     if (voxels.twoSided) openvdb::tools::prune(voxels.twoSided->tree());
     updateSparseMemoryStats(voxels);
     return voxels;

@@ -111,6 +111,9 @@ struct SparseBuildOptions {
     Bounds3 region;            // empty: the scene's bounds
     bool anisotropic = false;  // also build the directional levels (the GPU path's vct.aniso)
     bool depthLevels = false;  // hold them as optical depth (vct.opacity=depth)
+    // false (AO, not injected): level 0 keeps opacity alone, its albedo, normal and emission
+    // dropped once voxelized (the dense path's grid without attributes, voxelize.h)
+    bool attributes = true;
 };
 SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject, float sky,
                                    const ParamMap& params, const SparseBuildOptions& options);

@@ -174,6 +174,32 @@ TEST(VdbVoxelize, DeterministicAcrossRunsAndThreadCounts) {
     }
 }
 
+// AO's sparse grid keeps opacity alone (SparseBuildOptions::attributes): the same opacity
+// and directional levels bit for bit as a grid with attributes, no albedo, normal or
+// emission, and less memory.
+TEST(VdbVoxelize, AnAoGridKeepsOpacityAlone) {
+    const Scene s = floorAndBox();
+    SparseBuildOptions options;
+    options.anisotropic = true;
+    const SparseVoxelScene full = buildSparseVoxels(s, 48, false, 0.f, ParamMap(), options);
+    options.attributes = false;
+    const SparseVoxelScene ao = buildSparseVoxels(s, 48, false, 0.f, ParamMap(), options);
+    EXPECT_TRUE(full.albedo && full.normal && full.emission);
+    EXPECT_FALSE(ao.albedo || ao.normal || ao.emission);
+    ASSERT_EQ(ao.opacityLevels.size(), full.opacityLevels.size());
+    for (size_t k = 0; k < ao.opacityLevels.size(); ++k)
+        EXPECT_TRUE(sameBits(*ao.opacityLevels[k], *full.opacityLevels[k])) << "level " << k;
+    for (size_t axis = 0; axis < ao.directional.size(); ++axis) {
+        ASSERT_EQ(ao.directional[axis].size(), full.directional[axis].size());
+        ASSERT_FALSE(ao.directional[axis].empty());
+        for (size_t k = 0; k < ao.directional[axis].size(); ++k)
+            EXPECT_TRUE(sameBits(*ao.directional[axis][k].opacity, *full.directional[axis][k].opacity))
+                << "axis " << axis << " level " << k;
+    }
+    EXPECT_GT(ao.stats.activeVoxels, 100u);
+    EXPECT_LT(ao.stats.memoryBytes, full.stats.memoryBytes);
+}
+
 TEST(VdbVoxelize, AveragesMatchQuantizedMaterial) {
     Scene s = floorAndBox();
     SparseVoxelScene v = voxelizeSparse(s, 32);
