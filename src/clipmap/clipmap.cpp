@@ -130,8 +130,7 @@ Clipmap buildClipmap(const GpuScene& gpuScene, const Scene& scene, const Clipmap
     const glm::ivec3 res(layout.resolution);
     for (int l = 0; l < n; ++l)
         cm.levels[size_t(l)] = voxelizeGrid(gpuScene, makeGridLayout(layout.origin(l), layout.voxelSize(l), res),
-                                            params, timer, "voxelize_l" + std::to_string(l), inject,
-                                            attributes || inject);
+                                            params, timer, "voxelize_l" + std::to_string(l), inject, attributes);
     if (inject) {
         for (int l = 0; l < n; ++l) {
             std::vector<const VoxelGrid*> outer;

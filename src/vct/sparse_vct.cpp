@@ -20,11 +20,10 @@ SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache, const 
     options.region = region.bounds;
     options.anisotropic = cone.anisotropic;
     options.depthLevels = wantsDepthLevels(cone);
-    // AO reads opacity alone (the dense path's rule, voxel_volume.cpp).
-    options.attributes = inject || ctx.plan.runs(kPassConeGi) || ctx.plan.runs(kPassVoxelView);
+    options.attributes = voxelAttributesNeeded(ctx);
     // Lights that move rebuild the sparse grids whole (they are built and lit in one pass).
-    const std::string key = voxelGridKey(r, inject, options.anisotropic) + (options.depthLevels ? ";depth" : "") +
-                            (options.attributes ? "" : ";opacity-only") + ";region=" + boundsKey(region.bounds) +
+    const std::string key = voxelGridKey(r, inject, options.anisotropic, options.attributes) +
+                            (options.depthLevels ? ";depth" : "") + ";region=" + boundsKey(region.bounds) +
                             (inject ? ";lights=" + lightsKey(ctx.scene) : std::string());
     // A camera path with a view-fitted region asks for new grids as it moves: keep a few.
     if (!cache.grids.count(key) && cache.grids.size() >= kMaxCachedVolumes) cache.grids.clear();

@@ -12,8 +12,13 @@
 
 namespace vct {
 
-std::string voxelGridKey(const RenderRequest& r, bool inject, bool aniso) {
-    std::string k = std::to_string(r.voxelRes) + (inject ? "+inject" : "") + (aniso ? "+aniso" : "");
+bool voxelAttributesNeeded(const MethodContext& ctx) {
+    return ctx.plan.runs(kPassInject) || ctx.plan.runs(kPassConeGi) || ctx.plan.runs(kPassVoxelView);
+}
+
+std::string voxelGridKey(const RenderRequest& r, bool inject, bool aniso, bool attributes) {
+    std::string k = std::to_string(r.voxelRes) + (inject ? "+inject" : "") + (aniso ? "+aniso" : "") +
+                    (attributes ? "" : "+opacity-only");
     // Bounces trace with the pixel cones' settings: then every cone parameter shapes the grid.
     const bool bounced = inject && readVctBounces(r.params) > 0;
     for (const auto& [key, value] : r.params.values())
@@ -105,11 +110,8 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
     if (levels > 0 && cone.opacity == ConeOpacity::Depth)
         throw UsageError("--param vct.opacity=depth: clipmaps keep isotropic levels only (vct.clipmap.levels=" +
                          std::to_string(levels) + "); use the dense grid or the sparse backend");
-    // AO reads opacity alone: its grid keeps no albedo, normal or emission (voxelize.h), unless
-    // a lit pass, the GI cones or a voxel view of the same render reads them.
-    const bool attributes = inject || ctx.plan.runs(kPassConeGi) || ctx.plan.runs(kPassVoxelView);
-    std::string key = voxelGridKey(r, inject, aniso) + ";region=" + boundsKey(region.bounds);
-    if (!attributes) key += ";opacity-only";
+    const bool attributes = voxelAttributesNeeded(ctx);
+    std::string key = voxelGridKey(r, inject, aniso, attributes) + ";region=" + boundsKey(region.bounds);
     if (aniso && wantsDepthLevels(cone)) key += ";depth";
     // A clipmap is its layout: the cascades' origins snap to their voxels, so a camera moving
     // less than a snap step keeps the same cascades (the same voxels), a larger move builds new ones.
@@ -142,7 +144,8 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
         // Bounce cones would run inside one level and take its border for the sky: clipmap
         // levels hold direct light only.
         refuseVctBounces(r.params, inject, "vct.clipmap.levels");
-        v.clipmap = std::make_shared<Clipmap>(buildClipmap(ctx.gpu, ctx.scene, layout, inject, r.params, ctx.timer, attributes));
+        v.clipmap = std::make_shared<Clipmap>(
+            buildClipmap(ctx.gpu, ctx.scene, layout, inject, r.params, ctx.timer, attributes));
         gl.checkErrors("clipmap");
         ctx.runCounts["voxelize"]++;
         if (inject) ctx.runCounts["inject"]++;

@@ -38,8 +38,13 @@ struct VoxelVolumeCache {
 // under one key is stale under another.
 std::string lightsKey(const Scene& scene);
 
+// Whether this render's grid keeps albedo, normal and emission: injection, the GI cones or a
+// voxel view read them, AO alone reads opacity (voxelize.h). Both backends.
+bool voxelAttributesNeeded(const MethodContext& ctx);
+
 // A key of everything a grid depends on: two requests with the same key share one grid.
-std::string voxelGridKey(const RenderRequest& request, bool inject, bool aniso);
+// `attributes`: the grid keeps them (voxelAttributesNeeded).
+std::string voxelGridKey(const RenderRequest& request, bool inject, bool aniso, bool attributes);
 // The part of a grid's key that names its world box.
 std::string boundsKey(const Bounds3& bounds);
 

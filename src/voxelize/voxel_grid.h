@@ -42,7 +42,7 @@ struct VoxelGrid {
     // its facing normal (voxelize_shared.h). The cones' facing test reads every level.
     GlTexture normal;
     GlTexture emission;  // GL_RGBA16F, level 0 only: average emitted radiance (rgb)
-    bool emissive = false;  // a material emits (else emission holds zeros)
+    bool emissive = false;  // a material emits and the grid holds its emission (else zeros or none)
     // GL_RGBA16_SNORM, level 0 only, present when a material is doubleSided: the unit normal
     // (xyz, the winding side) and the doubleSided share of the voxel's weight (a).
     GlTexture twoSided;

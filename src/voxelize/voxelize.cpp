@@ -91,9 +91,10 @@ VoxelGrid voxelizeScene(const GpuScene& scene, const Bounds3& region, int voxelR
 
 VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& params, PassTimer& timer,
                        const std::string& scopeName, bool lit, bool attributes) {
+    attributes = attributes || lit;  // injection reads them
     VoxelGrid grid = makeGridLayout(layout.origin, layout.voxelSize, layout.resolution);
     const MaterialNeeds needs = materialNeeds(scene);
-    const bool twoSided = needs.doubleSided && lit && attributes;
+    const bool twoSided = needs.doubleSided && lit;
     // Refuse a grid this machine cannot hold, before allocating: llvmpipe keeps textures in system
     // memory and an oversized one ends in the OOM killer, not GL_OUT_OF_MEMORY. ~66 bytes per
     // voxel at the peak (accumulators, albedo, normal, radiance, directional mips): 4.4 GB RSS
@@ -101,7 +102,8 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     // add the doubleSided weight (4) and the two-sided texture (8); a grid of opacity alone
     // (no attributes) about 16 (the weight, opacity and directional levels).
     const double voxels = double(grid.resolution.x) * grid.resolution.y * grid.resolution.z;
-    const double needBytes = (!attributes ? 16.0 : twoSided ? 78.0 : 66.0) * voxels, haveBytes = double(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
+    const double bytesPerVoxel = !attributes ? 16.0 : twoSided ? 78.0 : 66.0;
+    const double needBytes = bytesPerVoxel * voxels, haveBytes = double(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
     if (haveBytes > 0.0 && needBytes > 0.5 * haveBytes)
         throw std::runtime_error("voxel grid " + std::to_string(grid.resolution.x) + "x" +
                                  std::to_string(grid.resolution.y) + "x" + std::to_string(grid.resolution.z) +

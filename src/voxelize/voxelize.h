@@ -27,10 +27,10 @@ namespace vct {
 // Fills opacity (level 0; 1 where any triangle overlaps), albedo, normal, emission,
 // occupiedVoxels and memoryBytes; `lit` (the grid will be lit by injectRadiance) also the
 // two-sided texture where a material is doubleSided, which only injection reads. Without
-// `attributes` (a grid for AO, which reads opacity alone) albedo, normal and emission stay
-// empty and only the weight is accumulated, one accumulator instead of seven or more: Sponza's
-// AO grid at 512^3 with its directional levels holds 99 MB instead of 827 and voxelizes in a
-// third of the time, the same AO bit for bit. Timer scope "voxelize".
+// `attributes` and `lit` (a grid for AO, which reads opacity alone) albedo, normal and
+// emission stay empty and only the weight is accumulated, one accumulator instead of seven or
+// more: Sponza's AO grid at 512^3 with its directional levels holds 99 MB instead of 827 and
+// voxelizes in a third of the time, the same AO bit for bit. Timer scope "voxelize".
 VoxelGrid voxelizeScene(const GpuScene& scene, const Bounds3& region, int voxelRes,
                         const ParamMap& params, PassTimer& timer, bool lit = true, bool attributes = true);
 
