@@ -9,6 +9,7 @@ layout(std430, binding = SCENE_BINDING_INDICES) readonly buffer SceneIndices { u
 layout(std430, binding = SCENE_BINDING_TRIMATERIAL) readonly buffer SceneTriMaterial { uint sceneTriMaterial[]; };
 layout(std430, binding = SCENE_BINDING_MATERIALS) readonly buffer SceneMaterials { GpuMaterial sceneMaterials[]; };
 layout(std430, binding = SCENE_BINDING_LIGHTS) readonly buffer SceneLights { GpuLight sceneLights[]; };
+layout(std430, binding = SCENE_BINDING_TRINORMAL) readonly buffer SceneTriNormal { vec4 sceneTriNormal[]; };
 layout(binding = SCENE_UNIT_TEXTURES) uniform sampler2DArray sceneTextures;
 
 // Linear RGBA base colour (the array is sRGB, so sampling decodes). `lod` < 0 lets the

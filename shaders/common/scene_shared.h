@@ -11,6 +11,7 @@ VCT_CONST int SCENE_BINDING_INDICES = 1;    // uint[3 * triangleCount]
 VCT_CONST int SCENE_BINDING_TRIMATERIAL = 2;  // uint[triangleCount]
 VCT_CONST int SCENE_BINDING_MATERIALS = 3;  // GpuMaterial[materialCount]
 VCT_CONST int SCENE_BINDING_LIGHTS = 4;     // GpuLight[lightCount]
+VCT_CONST int SCENE_BINDING_TRINORMAL = 5;  // vec4[triangleCount]: unit geometric normal, w = 0
 // Texture unit of the scene's texture array (sRGB RGBA8, one layer per glTF image).
 VCT_CONST int SCENE_UNIT_TEXTURES = 8;
 // Every scene texture is resampled to this square size in the array (mipmapped).

@@ -71,6 +71,14 @@ void validateScene(const Scene& scene) {
 namespace {
 
 // The lights as the shaders read them; the shadow pass fills in the shadow fields.
+// The G-buffer's geometric normal of triangle t: unit, (0, 1, 0) for a degenerate one (the
+// loader drops those, but a scene built in code may keep them).
+glm::vec3 triangleGeometricNormal(const Scene& scene, size_t t) {
+    const glm::uvec3& i = scene.triangles[t];
+    const glm::vec3 n = glm::cross(scene.positions[i.y] - scene.positions[i.x], scene.positions[i.z] - scene.positions[i.x]);
+    return glm::length(n) > 0.f ? glm::normalize(n) : glm::vec3(0.f, 1.f, 0.f);
+}
+
 std::vector<gpu::GpuLight> gpuLights(const Scene& scene) {
     std::vector<gpu::GpuLight> lights;
     for (const Light& l : scene.lights) {
@@ -130,6 +138,10 @@ GpuScene uploadScene(const Scene& scene) {
     std::vector<uint32_t> triMaterial = scene.triangleMaterial;
     triMaterial.resize(scene.triangles.size(), 0);
     g.triangleMaterial = createBuffer(triMaterial.size() * sizeof(uint32_t), triMaterial.data());
+    std::vector<glm::vec4> triNormal(scene.triangles.size());
+    for (size_t t = 0; t < triNormal.size(); ++t) triNormal[t] = glm::vec4(triangleGeometricNormal(scene, t), 0.f);
+    g.triangleNormal = createBuffer(std::max<size_t>(1, triNormal.size()) * sizeof(glm::vec4),
+                                    triNormal.empty() ? nullptr : triNormal.data());
 
     std::vector<gpu::GpuMaterial> materials;
     for (const Material& m : scene.materials) {
@@ -193,6 +205,7 @@ void bindSceneBuffers(const GpuScene& s) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::SCENE_BINDING_TRIMATERIAL, s.triangleMaterial.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::SCENE_BINDING_MATERIALS, s.materials.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::SCENE_BINDING_LIGHTS, s.lights.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::SCENE_BINDING_TRINORMAL, s.triangleNormal.id());
     glBindTextureUnit(gpu::SCENE_UNIT_TEXTURES, s.textures.id());
 }
 

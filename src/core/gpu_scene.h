@@ -12,6 +12,7 @@ struct GpuScene {
     GlBuffer vertices;          // GpuVertex[]
     GlBuffer indices;           // uint[3 * triangleCount], also the element buffer
     GlBuffer triangleMaterial;  // uint[triangleCount]
+    GlBuffer triangleNormal;    // vec4[triangleCount]: unit geometric normal ((0, 1, 0) if degenerate)
     GlBuffer materials;         // GpuMaterial[]
     GlBuffer lights;            // GpuLight[] (shadow fields filled by the shadow pass)
     GlTexture textures;         // GL_TEXTURE_2D_ARRAY, SCENE_TEXTURE_SIZE^2, at least one layer

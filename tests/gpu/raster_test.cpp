@@ -1,7 +1,12 @@
 // The raster path against closed forms: G-buffer positions and depths on a known plane,
 // Lambertian direct light from directional and point lights, shadows, and AO applied to
 // the ambient term only.
+#include "core/gpu_scene.h"
+#include "core/timing.h"
+#include "core/view.h"
 #include "gl/context.h"
+#include "gl/readback.h"
+#include "raster/gbuffer_pass.h"
 #include "render/renderer.h"
 #include "support/test_scenes.h"
 
@@ -62,6 +67,44 @@ TEST(Raster, GBufferPositionsAndDepthMatchRayPlaneIntersection) {
             EXPECT_NEAR(depth.at(x, y), 5.f, 1e-4f);
             EXPECT_NEAR(normal.at(x, y, 1), 1.f, 1e-5f);
         }
+}
+
+// The geometric normal is the triangle's own (its plane's normal turned toward the eye),
+// whatever the vertex normals say, and w names the triangle (index + 1).
+TEST(Raster, GBufferGeometricNormalIsTheTrianglesPlaneFacingTheEye) {
+    Scene s;
+    const uint32_t m = addMaterial(s, glm::vec3(0.5f));
+    // A plane through the origin with normal (-1, 2, 0) / sqrt(5): spanned by (2, 1, 0) and z.
+    addQuad(s, {-8, -4, -10}, {0, 0, 20}, {16, 8, 0}, m);
+    for (glm::vec3& n : s.normals) n = glm::vec3(1, 0, 0);  // smooth normals that disagree
+    finish(s);
+    const glm::vec3 plane = glm::vec3(-1, 2, 0) / std::sqrt(5.f);
+    GlContext::shared();
+    GpuScene gpu = uploadScene(s);
+    PassTimer timer;
+    for (float side : {1.f, -1.f}) {
+        Camera cam;
+        cam.eye = glm::vec3(0, 5 * side, 0);
+        cam.target = glm::vec3(0, 0, 0);
+        cam.up = glm::vec3(0, 0, -1);
+        cam.yfov = glm::radians(40.f);
+        cam.znear = 0.01f;
+        const int w = 16;
+        GBuffer g = renderGBuffer(gpu, makeView(cam, w, w), timer, false);
+        const Image geo = readTexture2D(g.geomNormal.id(), w, w, 4);
+        GlContext::shared().checkErrors("raster test: geometric normal");
+        int covered = 0;
+        for (int i = 0; i < w * w; ++i) {
+            const float* q = &geo.pixels[4 * size_t(i)];
+            if (q[3] == 0.f) continue;
+            ++covered;
+            EXPECT_NEAR(q[0], side * plane.x, 1e-6f) << "pixel " << i;
+            EXPECT_NEAR(q[1], side * plane.y, 1e-6f) << "pixel " << i;
+            EXPECT_NEAR(q[2], 0.f, 1e-6f) << "pixel " << i;
+            EXPECT_TRUE(q[3] == 1.f || q[3] == 2.f) << "triangle id " << q[3];
+        }
+        EXPECT_EQ(covered, w * w);
+    }
 }
 
 TEST(Raster, DirectionalLightGivesLambertClosedForm) {
