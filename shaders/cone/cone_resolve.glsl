@@ -5,15 +5,19 @@
 //            the output, and nothing else runs;
 //   resolve  (s > 1) every surface pixel takes the traced values of its four nearest blocks,
 //            weighted bilinearly and by how well each block's pixel shares its surface
-//            (cone_resolveAgreement), over the sixteen nearest by agreement alone when the
-//            four share none, and lists the pixel for the own stage when no block does;
+//            (cone_resolveAgreement), and lists the pixel for the wide stage when the four
+//            share none;
+//   wide     (s > 1, when the resolve listed pixels) each listed pixel (a silhouette, a
+//            corner) takes the sixteen nearest blocks by agreement alone, and lists itself for
+//            the own stage when no block shares its surface (CONE_STAGE_WIDE, cone_shared.h,
+//            says why this is a stage);
 //   own      (s > 1, when the resolve listed pixels) each listed pixel traces its own cones
 //            (CONE_STAGE_OWN, cone_shared.h, says why this is a stage). (Tracing also
 //            where the blocks disagree, at a crease's dark band, was tried: on the Cornell
 //            box it traced half the pixels at s = 4 and moved the error against the ray
 //            tracer by 0.001.)
-// The resolve is its own program (CONE_RESOLVE_STAGE defined: no cone march, no volume);
-// the trace program runs the trace and own stages.
+// The resolve is its own program (CONE_RESOLVE_STAGE defined: no cone march, no volume) and
+// runs the resolve and wide stages; the trace program runs the trace and own stages.
 // The includer defines, before including this file:
 //   vec4 cone_passTrace(ivec2 pix, vec3 p, vec3 n, vec3 ng, out vec2 counts)
 //            the pixel's traced value (what the resolve interpolates) and (samples, fetches);
@@ -26,12 +30,23 @@
 // (Loading a work group's blocks once into shared memory, as a GPU would, was tried: it gives
 // the same image and made the resolve slower on llvmpipe, whose barrier() is costly.)
 
-// The pixels that trace their own cones (the caller zeroes the count).
+// The pixels that trace their own cones, cone_ownPixels[0, cone_ownCount), and those the
+// wide stage resolves, cone_ownPixels[pixels + i] for i < cone_wideCount (the caller zeroes
+// both counts and sizes the array for two lists of every pixel).
 layout(std430, binding = CONE_BINDING_OWN_LIST) buffer ConeOwnList {
     uint cone_ownCount;
-    uint cone_ownPad[CONE_OWN_LIST_HEADER - 1];
+    uint cone_wideCount;
+    uint cone_ownPad[CONE_OWN_LIST_HEADER - 2];
     ivec2 cone_ownPixels[];
 };
+
+// The first entry of the wide stage's list in cone_ownPixels.
+uint cone_wideListStart() { return uint(u.image.x) * uint(u.image.y); }
+
+// The list entry of this invocation in a stage over a list (the own and wide stages).
+uint cone_listEntry() {
+    return uint(u.trace.z) + gl_WorkGroupID.x * uint(CONE_LOCAL_SIZE * CONE_LOCAL_SIZE) + gl_LocalInvocationIndex;
+}
 
 // The pixel that traces block `cell`: the block's centre, clamped to the image.
 ivec2 cone_tracedPixel(ivec2 cell, int s) { return min(cell * s + ivec2(s / 2), u.image.xy - 1); }
@@ -65,6 +80,43 @@ float cone_resolveAgreement(ConeResolveBlock b, vec3 p, vec3 n) {
     return wn * max(0.0, 1.0 - slope / CONE_RESOLVE_PLANE_SLOPE);
 }
 
+// Pixel q (point p, normal n) of region c0 from the sixteen blocks around the region, by
+// agreement alone; listed for the own stage when no block shares its surface (an object
+// narrower than a block).
+void cone_resolveWide(ivec2 q, int s, ivec2 blocks, ivec2 c0, vec3 p, vec3 n) {
+    vec4 sum = vec4(0.0);
+    float weight = 0.0;
+    for (int j = -1; j <= 2; ++j)
+        for (int i = -1; i <= 2; ++i) {
+            ivec2 c = c0 + ivec2(i, j);
+            if (any(lessThan(c, ivec2(0))) || any(greaterThanEqual(c, blocks))) continue;
+            ConeResolveBlock b = cone_loadBlock(c, s);
+            float w = cone_resolveAgreement(b, p, n);
+            sum += w * b.traced;
+            weight += w;
+        }
+    if (weight < CONE_RESOLVE_MIN_WEIGHT) {
+        cone_ownPixels[atomicAdd(cone_ownCount, 1u)] = q;
+        return;
+    }
+    cone_passStore(q, cone_passFinish(q, sum / weight));
+}
+
+// The region of pixel q: the c0 whose pixels run from block c0's traced pixel up to, not
+// including, block c0 + 1's (main's regions).
+ivec2 cone_regionOf(ivec2 q, int s) { return ivec2(floor(vec2(q - ivec2(s / 2)) / float(s))); }
+
+// The wide stage: one listed pixel per invocation.
+void cone_wideStage() {
+    uint entry = cone_listEntry();
+    if (entry >= cone_wideCount) return;
+    ivec2 q = cone_ownPixels[cone_wideListStart() + entry];
+    vec3 p, n, ng;
+    if (!cone_surface(q, p, n, ng)) return;  // listed pixels are surface pixels
+    int s = max(u.trace.x, 1);
+    cone_resolveWide(q, s, (u.image.xy + s - 1) / s, cone_regionOf(q, s), p, n);
+}
+
 // Pixel q of region c0 (main), whose four nearest blocks (c0 + (i, j), clamped to the
 // image's `blocks`) are near[i + 2 j].
 void cone_resolve(ivec2 q, int s, ivec2 blocks, ivec2 c0, ConeResolveBlock near[4]) {
@@ -85,23 +137,8 @@ void cone_resolve(ivec2 q, int s, ivec2 blocks, ivec2 c0, ConeResolveBlock near[
             weight += w;
         }
     if (weight < CONE_RESOLVE_MIN_WEIGHT) {
-        // A silhouette or a corner: the sixteen nearest blocks, by agreement alone.
-        sum = vec4(0.0);
-        weight = 0.0;
-        for (int j = -1; j <= 2; ++j)
-            for (int i = -1; i <= 2; ++i) {
-                ivec2 c = c0 + ivec2(i, j);
-                if (any(lessThan(c, ivec2(0))) || any(greaterThanEqual(c, blocks))) continue;
-                ConeResolveBlock b = cone_loadBlock(c, s);
-                float w = cone_resolveAgreement(b, p, n);
-                sum += w * b.traced;
-                weight += w;
-            }
-    }
-    if (weight < CONE_RESOLVE_MIN_WEIGHT) {
-        // No block shares this surface (an object narrower than a block): its own cones,
-        // in the own stage.
-        cone_ownPixels[atomicAdd(cone_ownCount, 1u)] = q;
+        // A silhouette or a corner: the sixteen nearest blocks, in the wide stage.
+        cone_ownPixels[cone_wideListStart() + atomicAdd(cone_wideCount, 1u)] = q;
         return;
     }
     cone_passStore(q, cone_passFinish(q, sum / weight));
@@ -115,6 +152,10 @@ void cone_resolve(ivec2 q, int s, ivec2 blocks, ivec2 c0, ConeResolveBlock near[
 // path per pixel; reading those sixteen once per region too was slower, 16 ms and 28 ms: the
 // sixteen blocks do not fit in the registers).
 void main() {
+    if (u.trace.y == CONE_STAGE_WIDE) {
+        cone_wideStage();
+        return;
+    }
     int s = max(u.trace.x, 1);
     ivec2 blocks = (u.image.xy + s - 1) / s;
     ivec2 c0 = ivec2(gl_GlobalInvocationID.xy) - 1;
@@ -133,7 +174,8 @@ void main() {
 
 #else
 
-void cone_ownTrace(uint entry) {
+void cone_ownTrace() {
+    uint entry = cone_listEntry();
     if (entry >= cone_ownCount) return;
     ivec2 q = cone_ownPixels[entry];
     vec3 p, n, ng;
@@ -148,8 +190,7 @@ void main() {
     ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
     int s = max(u.trace.x, 1);
     if (u.trace.y == CONE_STAGE_OWN) {
-        cone_ownTrace(uint(u.trace.z) + gl_WorkGroupID.x * uint(CONE_LOCAL_SIZE * CONE_LOCAL_SIZE) +
-                      gl_LocalInvocationIndex);
+        cone_ownTrace();
         return;
     }
     ivec2 blocks = (u.image.xy + s - 1) / s;

@@ -119,18 +119,20 @@ void dispatchStage(GLuint ubo, GLint stage, GLuint image, GLenum format, int w, 
                         groupCount(h, gpu::CONE_LOCAL_SIZE));
 }
 
-// The own stage over the pixels the resolve listed. Their count comes back to the CPU (four
-// bytes) rather than feeding an indirect dispatch: llvmpipe was seen to read indirect
-// arguments before the pass that wrote them had finished (voxelize.cpp).
-void dispatchOwnStage(GLuint ubo, GLuint list, GLuint image, GLenum format) {
+// A stage over the pixels a previous stage listed: the own stage (count at entry 0 of the
+// list's header) or the wide stage (entry 1). Their count comes back to the CPU (four bytes)
+// rather than feeding an indirect dispatch: llvmpipe was seen to read indirect arguments
+// before the pass that wrote them had finished (voxelize.cpp).
+void dispatchListStage(GLuint ubo, GLint stage, GLuint list, GLuint image, GLenum format) {
     GLuint listed = 0;
-    glGetNamedBufferSubData(list, 0, sizeof(listed), &listed);
+    const GLintptr countAt = (stage == gpu::CONE_STAGE_WIDE ? 1 : 0) * GLintptr(sizeof(GLuint));
+    glGetNamedBufferSubData(list, countAt, sizeof(listed), &listed);
     const GLuint perGroup = GLuint(gpu::CONE_LOCAL_SIZE * gpu::CONE_LOCAL_SIZE);
     const GLuint maxGroups = 65535;  // the GL minimum of GL_MAX_COMPUTE_WORK_GROUP_COUNT
     for (GLuint base = 0; base < listed; base += maxGroups * perGroup) {
         setTraceUniform(ubo, 2, GLint(base));
-        dispatchStageGroups(ubo, gpu::CONE_STAGE_OWN, image, format,
-                            std::min(maxGroups, (listed - base + perGroup - 1) / perGroup), 1);
+        dispatchStageGroups(ubo, stage, image, format, std::min(maxGroups, (listed - base + perGroup - 1) / perGroup),
+                            1);
     }
 }
 
@@ -154,18 +156,22 @@ GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlB
         const int tw = (gbuffer.width + s - 1) / s, th = (gbuffer.height + s - 1) / s;
         GlTexture traced = createTexture2D(format, tw, th);
         dispatchStage(ubo, gpu::CONE_STAGE_TRACE, traced.id(), format, tw, th);
-        // The resolve stage over every pixel (cone_resolve.glsl), listing those without a block.
-        GlBuffer own = createBuffer((gpu::CONE_OWN_LIST_HEADER + 2 * pixels) * sizeof(GLuint));
-        glClearNamedBufferSubData(own.id(), GL_R32UI, 0, sizeof(GLuint), GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+        // The resolve stage over every pixel (cone_resolve.glsl), listing those its four
+        // blocks do not share for the wide stage, which lists those no block shares: two
+        // lists of up to every pixel, ivec2 each.
+        GlBuffer own = createBuffer((gpu::CONE_OWN_LIST_HEADER + 4 * pixels) * sizeof(GLuint));
+        glClearNamedBufferSubData(own.id(), GL_R32UI, 0, 2 * sizeof(GLuint), GL_RED_INTEGER, GL_UNSIGNED_INT,
+                                  nullptr);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_OWN_LIST, own.id());
         glBindImageTexture(gpu::CONE_IMAGE_TRACED, traced.id(), 0, GL_FALSE, 0, GL_READ_ONLY, format);
         glUseProgram(cachedProgram(coneResolveProgramKey(gi)));
         // One invocation per region of pixels that share their four nearest blocks
         // (cone_resolve.glsl): the blocks and one more region on each axis.
         dispatchStage(ubo, gpu::CONE_STAGE_RESOLVE, out.id(), format, tw + 1, th + 1);
+        dispatchListStage(ubo, gpu::CONE_STAGE_WIDE, own.id(), out.id(), format);
         glBindImageTexture(gpu::CONE_IMAGE_TRACED, 0, 0, GL_FALSE, 0, GL_READ_ONLY, format);
         glUseProgram(program);
-        dispatchOwnStage(ubo, own.id(), out.id(), format);
+        dispatchListStage(ubo, gpu::CONE_STAGE_OWN, own.id(), out.id(), format);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_OWN_LIST, 0);
     }
     glUseProgram(0);

@@ -59,8 +59,9 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
 // new `counts` buffer each pixel's (samples, fetches). With `traceScale` s > 1 it runs the
 // pass's stages (CONE_STAGE_TRACE into an image of ceil(size / s), CONE_STAGE_RESOLVE over
 // every pixel, one invocation per s x s region, in the resolve's own program
-// (coneResolveProgramKey), then CONE_STAGE_OWN over the pixels the resolve listed, when it
-// listed any), setting the stage in `ubo`, the pass's bound ConeUniforms.
+// (coneResolveProgramKey), CONE_STAGE_WIDE in that program over the pixels the resolve
+// listed, then CONE_STAGE_OWN over the pixels the wide stage listed; a list stage runs when
+// its list has entries), setting the stage in `ubo`, the pass's bound ConeUniforms.
 GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlBuffer& counts, GLuint ubo,
                             int traceScale);
 
