@@ -57,7 +57,7 @@ bench: build
 # Regenerates docs/pareto.txt: error against frame_ms and time_ms of VCT's variants, the
 # reference at 1..128 spp and the denoised ray tracers (about 12 minutes on 2 cores).
 pareto: build
-	./$(BUILD)/bench_pareto | tee docs/pareto.txt
+	./$(BUILD)/bench_pareto --passes | tee docs/pareto.txt
 
 # Regenerates docs/results.md and docs/results/*.svg from sweeps/study.json.
 results: build

@@ -30,18 +30,22 @@
 // (Loading a work group's blocks once into shared memory, as a GPU would, was tried: it gives
 // the same image and made the resolve slower on llvmpipe, whose barrier() is costly.)
 
-// The pixels that trace their own cones, cone_ownPixels[0, cone_ownCount), and those the
-// wide stage resolves, cone_ownPixels[pixels + i] for i < cone_wideCount (the caller zeroes
-// both counts and sizes the array for two lists of every pixel).
+// The pixels that trace their own cones, cone_listPixels[0, cone_ownCount), and those the
+// wide stage resolves, cone_listPixels[width x height + i] for i < cone_wideCount, each as
+// y x width + x (the caller zeroes both counts and sizes the array for two lists of every
+// pixel: 8 bytes a pixel, so a 4K image's lists stay within GL's 128 MiB storage block).
 layout(std430, binding = CONE_BINDING_OWN_LIST) buffer ConeOwnList {
     uint cone_ownCount;
     uint cone_wideCount;
     uint cone_ownPad[CONE_OWN_LIST_HEADER - 2];
-    ivec2 cone_ownPixels[];
+    uint cone_listPixels[];
 };
 
-// The first entry of the wide stage's list in cone_ownPixels.
+// The first entry of the wide stage's list in cone_listPixels.
 uint cone_wideListStart() { return uint(u.image.x) * uint(u.image.y); }
+
+uint cone_listIndex(ivec2 q) { return uint(q.y) * uint(u.image.x) + uint(q.x); }
+ivec2 cone_listPixel(uint i) { return ivec2(i % uint(u.image.x), i / uint(u.image.x)); }
 
 // The list entry of this invocation in a stage over a list (the own and wide stages).
 uint cone_listEntry() {
@@ -96,7 +100,7 @@ void cone_resolveWide(ivec2 q, int s, ivec2 blocks, ivec2 c0, vec3 p, vec3 n) {
             weight += w;
         }
     if (weight < CONE_RESOLVE_MIN_WEIGHT) {
-        cone_ownPixels[atomicAdd(cone_ownCount, 1u)] = q;
+        cone_listPixels[atomicAdd(cone_ownCount, 1u)] = cone_listIndex(q);
         return;
     }
     cone_passStore(q, cone_passFinish(q, sum / weight));
@@ -110,7 +114,7 @@ ivec2 cone_regionOf(ivec2 q, int s) { return ivec2(floor(vec2(q - ivec2(s / 2)) 
 void cone_wideStage() {
     uint entry = cone_listEntry();
     if (entry >= cone_wideCount) return;
-    ivec2 q = cone_ownPixels[cone_wideListStart() + entry];
+    ivec2 q = cone_listPixel(cone_listPixels[cone_wideListStart() + entry]);
     vec3 p, n, ng;
     if (!cone_surface(q, p, n, ng)) return;  // listed pixels are surface pixels
     int s = max(u.trace.x, 1);
@@ -138,7 +142,7 @@ void cone_resolve(ivec2 q, int s, ivec2 blocks, ivec2 c0, ConeResolveBlock near[
         }
     if (weight < CONE_RESOLVE_MIN_WEIGHT) {
         // A silhouette or a corner: the sixteen nearest blocks, in the wide stage.
-        cone_ownPixels[cone_wideListStart() + atomicAdd(cone_wideCount, 1u)] = q;
+        cone_listPixels[cone_wideListStart() + atomicAdd(cone_wideCount, 1u)] = cone_listIndex(q);
         return;
     }
     cone_passStore(q, cone_passFinish(q, sum / weight));
@@ -177,7 +181,7 @@ void main() {
 void cone_ownTrace() {
     uint entry = cone_listEntry();
     if (entry >= cone_ownCount) return;
-    ivec2 q = cone_ownPixels[entry];
+    ivec2 q = cone_listPixel(cone_listPixels[entry]);
     vec3 p, n, ng;
     if (!cone_surface(q, p, n, ng)) return;  // listed pixels are surface pixels
     vec2 counts;

@@ -53,7 +53,7 @@ VCT_CONST int CONE_BOUNCE_GROUP = 64;       // cone_bounce.glsl: invocations per
 VCT_CONST int CONE_STAGE_TRACE = 0;
 VCT_CONST int CONE_STAGE_RESOLVE = 1;
 // The pixels the resolve found no block for trace their own cones in a third stage, over the
-// list the resolve appended them to (cone_ownPixels), not in the resolve itself: a branch
+// list the resolve appended them to (cone_listPixels), not in the resolve itself: a branch
 // that holds a whole cone march costs a SIMD machine in every resolve invocation, even when
 // no lane takes it (llvmpipe, 512^2: the resolve took 90 ms with it, 60 ms without).
 VCT_CONST int CONE_STAGE_OWN = 2;
@@ -61,14 +61,14 @@ VCT_CONST int CONE_STAGE_OWN = 2;
 // search the sixteen nearest in a stage of their own, over the list the resolve appended
 // them to, for the same reason: as a branch of the resolve, a SIMD machine ran the sixteen
 // blocks' loads for every lane whenever one lane needed them (llvmpipe, Sponza AO at 512^2,
-// s = 4: the cone pass took 32 ms with the branch, 23 ms with the stage; the same image).
+// s = 4: the cone pass took 32 ms with the branch, 25 ms with the stage; the same image).
 VCT_CONST int CONE_STAGE_WIDE = 3;
 // The resolve is a program of its own (CONE_RESOLVE_STAGE, coneResolveProgramKey), compiled
 // without the cone march: llvmpipe paid for the march's code in every resolve invocation
 // that never ran it (512^2: 60 ms in the trace stage's program, 15-22 ms in its own).
-// The own and wide stages' lists: (own count, wide count, 2 pad, then ivec2 per pixel: the own
-// list from entry 0, the wide list from entry width x height). Binding 7 is also the bounce's
-// voxel list; no program has both.
+// The own and wide stages' lists: (own count, wide count, 2 pad, then a pixel's y x width + x
+// per entry: the own list from entry 0, the wide list from entry width x height). Binding 7
+// is also the bounce's voxel list; no program has both.
 VCT_CONST int CONE_BINDING_OWN_LIST = 7;
 VCT_CONST int CONE_OWN_LIST_HEADER = 4;  // uints before the pixels
 VCT_CONST int CONE_IMAGE_TRACED = 1;  // image unit of the traced image in the resolve stage

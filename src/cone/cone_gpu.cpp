@@ -158,8 +158,8 @@ GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlB
         dispatchStage(ubo, gpu::CONE_STAGE_TRACE, traced.id(), format, tw, th);
         // The resolve stage over every pixel (cone_resolve.glsl), listing those its four
         // blocks do not share for the wide stage, which lists those no block shares: two
-        // lists of up to every pixel, ivec2 each.
-        GlBuffer own = createBuffer((gpu::CONE_OWN_LIST_HEADER + 4 * pixels) * sizeof(GLuint));
+        // lists of up to every pixel, a uint each.
+        GlBuffer own = createBuffer((gpu::CONE_OWN_LIST_HEADER + 2 * pixels) * sizeof(GLuint));
         glClearNamedBufferSubData(own.id(), GL_R32UI, 0, 2 * sizeof(GLuint), GL_RED_INTEGER, GL_UNSIGNED_INT,
                                   nullptr);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_OWN_LIST, own.id());
