@@ -280,13 +280,8 @@ SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject
     // The GPU path's keys, read for parity (the sparse grids always hold float32).
     const float offset = voxelSettings().read(params).injectOffset;
     const BounceSettings bounce = bounceSettings().read(params);
-    SparseVoxelScene voxels =
-        voxelizeSparse(scene, options.region.empty() ? scene.bounds : options.region, voxelRes, inject);
-    if (!inject && !options.attributes) {
-        voxels.albedo.reset();
-        voxels.normal.reset();
-        voxels.emission.reset();
-    }
+    SparseVoxelScene voxels = voxelizeSparse(scene, options.region.empty() ? scene.bounds : options.region,
+                                             voxelRes, inject, options.attributes);
     if (inject) {
         injectSparseRadiance(voxels, scene, offset);
         // The bounces trace with the pixel cones' settings, as the GPU path's.

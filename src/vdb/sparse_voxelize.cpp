@@ -51,10 +51,12 @@ struct VoxelSums {
     uint64_t emission[3] = {0, 0, 0};
 };
 
-// One thread's share: voxel -> index into `sums`.
+// One thread's share: voxel -> index into `sums`. A grid without attributes needs only which
+// voxels are occupied (level 0's opacity is 1 on every occupied voxel): `slots` alone, no sums.
 struct ThreadSums {
     openvdb::Int32Tree slots{-1};
     std::vector<VoxelSums> sums;
+    bool attributes = true;
 };
 
 struct Tri {
@@ -111,6 +113,11 @@ void accumulate(const Scene& scene, const Tri& tri, const glm::ivec3& v, ThreadS
         const Material& m = scene.materials[tri.material];
         if (m.alphaMask && materialAlpha(scene, tri.material, uv) < m.alphaCutoff) return;
     }
+    const openvdb::Coord ijk(v.x, v.y, v.z);
+    if (!ts.attributes) {
+        acc.setValueOn(ijk, 0);
+        return;
+    }
     const glm::vec3 albedo =
         tri.material < scene.materials.size() ? materialAlbedo(scene, tri.material, uv) : glm::vec3(1.f);
     const glm::vec3 emission = tri.material < scene.materials.size()
@@ -121,7 +128,6 @@ void accumulate(const Scene& scene, const Tri& tri, const glm::ivec3& v, ThreadS
     const float len = glm::length(n), faceLen = glm::length(tri.faceN);
     n = len > 1e-6f ? n / len : (faceLen > 0.f ? tri.faceN / faceLen : glm::vec3(0.f));
 
-    const openvdb::Coord ijk(v.x, v.y, v.z);
     int32_t slot = -1;
     if (!acc.probeValue(ijk, slot)) {
         slot = int32_t(ts.sums.size());
@@ -199,7 +205,7 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, int voxelRes) {
     return voxelizeSparse(scene, scene.bounds, voxelRes);
 }
 
-SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int voxelRes, bool lit) {
+SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int voxelRes, bool lit, bool attributes) {
     ensureOpenVdb();
     checkScene(scene);
     const auto t0 = std::chrono::steady_clock::now();
@@ -219,7 +225,10 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
     tbb::parallel_for(tbb::blocked_range<size_t>(0, scene.triangles.size(), 64),
                       [&](const tbb::blocked_range<size_t>& r) {
                           std::unique_ptr<ThreadSums>& ts = perThread.local();
-                          if (!ts) ts = std::make_unique<ThreadSums>();
+                          if (!ts) {
+                              ts = std::make_unique<ThreadSums>();
+                              ts->attributes = attributes || lit;
+                          }
                           openvdb::tree::ValueAccessor<openvdb::Int32Tree> acc(ts->slots);
                           Tri tri;
                           for (size_t t = r.begin(); t != r.end(); ++t)
@@ -235,6 +244,23 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
     for (const ThreadSums* ts : threads) topology.topologyUnion(ts->slots);
 
     auto opacity = std::make_shared<openvdb::FloatTree>(topology, 0.f, 1.f, openvdb::TopologyCopy());
+    auto makeGrid = [&](auto tree, const char* name) {
+        using TreeT = typename decltype(tree)::element_type;
+        auto grid = openvdb::Grid<TreeT>::create(tree);
+        grid->setName(name);
+        grid->setTransform(levelTransform(out, 0));
+        return grid;
+    };
+    out.opacity = makeGrid(opacity, "opacity");
+    out.opacity->setGridClass(openvdb::GRID_FOG_VOLUME);
+    out.opacityLevels = {out.opacity};
+    if (!attributes && !lit) {
+        // Opacity alone: the occupied set is the whole answer.
+        perThread.clear();
+        out.stats.voxelizeSeconds = secondsSince(t0);
+        updateSparseMemoryStats(out);
+        return out;
+    }
     const openvdb::Vec3s zero(0.f);
     auto albedo = std::make_shared<openvdb::Vec3STree>(topology, zero, zero, openvdb::TopologyCopy());
     auto normal = std::make_shared<openvdb::Vec3STree>(topology, zero, zero, openvdb::TopologyCopy());
@@ -299,21 +325,11 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
         }
     });
 
-    auto makeGrid = [&](auto tree, const char* name) {
-        using TreeT = typename decltype(tree)::element_type;
-        auto grid = openvdb::Grid<TreeT>::create(tree);
-        grid->setName(name);
-        grid->setTransform(levelTransform(out, 0));
-        return grid;
-    };
-    out.opacity = makeGrid(opacity, "opacity");
-    out.opacity->setGridClass(openvdb::GRID_FOG_VOLUME);
     out.albedo = makeGrid(albedo, "albedo");
     out.normal = makeGrid(normal, "normal");
     out.normal->setVectorType(openvdb::VEC_COVARIANT_NORMALIZE);
     out.emission = makeGrid(emission, "emission");
     if (twoSided) out.twoSided = makeGrid(twoSidedShare, "two_sided");
-    out.opacityLevels = {out.opacity};
     out.stats.voxelizeSeconds = secondsSince(t0);
     updateSparseMemoryStats(out);
     return out;

@@ -111,8 +111,8 @@ struct SparseBuildOptions {
     Bounds3 region;            // empty: the scene's bounds
     bool anisotropic = false;  // also build the directional levels (the GPU path's vct.aniso)
     bool depthLevels = false;  // hold them as optical depth (vct.opacity=depth)
-    // false (AO, not injected): level 0 keeps opacity alone, its albedo, normal and emission
-    // dropped once voxelized (the dense path's grid without attributes, voxelize.h)
+    // false (AO, not injected): level 0 holds opacity alone, voxelized without albedo, normal
+    // or emission (the dense path's grid without attributes, voxelize.h)
     bool attributes = true;
 };
 SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject, float sky,
@@ -122,8 +122,11 @@ SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject
 SparseVoxelScene voxelizeSparse(const Scene& scene, int voxelRes);
 // Over `region` instead of the scene's bounds: triangles outside it are left out. `lit` (the
 // voxels will be injected): also the two-sided share where a material is doubleSided, which
-// only injection reads (voxelizeGrid's `lit`).
-SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int voxelRes, bool lit = true);
+// only injection reads (voxelizeGrid's `lit`). `attributes` false and not `lit` (AO): opacity
+// alone, no albedo, normal or emission grids, and no per-voxel sums while voxelizing (the
+// same opacity: level 0 is 1 on every occupied voxel).
+SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int voxelRes, bool lit = true,
+                                bool attributes = true);
 void injectSparseRadiance(SparseVoxelScene& voxels, const Scene& scene, float shadowOffsetVoxels);
 void buildSparseLevels(SparseVoxelScene& voxels, bool anisotropic = false, bool depthLevels = false);
 // Recomputes stats.memoryBytes / denseBytes / activeVoxels from the grids held.

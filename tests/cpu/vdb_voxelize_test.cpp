@@ -178,7 +178,16 @@ TEST(VdbVoxelize, DeterministicAcrossRunsAndThreadCounts) {
 // and directional levels bit for bit as a grid with attributes, no albedo, normal or
 // emission, and less memory.
 TEST(VdbVoxelize, AnAoGridKeepsOpacityAlone) {
-    const Scene s = floorAndBox();
+    // With a quad whose alpha-masked material is cut away everywhere: the grid without
+    // attributes still applies the alpha test when it marks voxels.
+    Scene s = floorAndBox();
+    const size_t unmasked = voxelizeSparse(s, 48).stats.activeVoxels;
+    const uint32_t cut = vcttest::addMaterial(s, glm::vec3(0.5f));
+    s.materials[cut].alphaMask = true;
+    s.materials[cut].alphaCutoff = 0.5f;
+    s.materials[cut].baseColorFactor.a = 0.2f;
+    vcttest::addQuad(s, {-0.5f, 0.6f, -0.5f}, {1.f, 0.f, 0.f}, {0.f, 0.f, 1.f}, cut);  // inside the box
+    vcttest::finish(s);
     SparseBuildOptions options;
     options.anisotropic = true;
     const SparseVoxelScene full = buildSparseVoxels(s, 48, false, 0.f, ParamMap(), options);
@@ -197,6 +206,7 @@ TEST(VdbVoxelize, AnAoGridKeepsOpacityAlone) {
                 << "axis " << axis << " level " << k;
     }
     EXPECT_GT(ao.stats.activeVoxels, 100u);
+    EXPECT_EQ(ao.opacity->activeVoxelCount(), unmasked);
     EXPECT_LT(ao.stats.memoryBytes, full.stats.memoryBytes);
 }
 
