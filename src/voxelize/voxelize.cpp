@@ -2,6 +2,7 @@
 
 #include "common/scene_shared.h"
 #include "core/errors.h"
+#include "gl/context.h"
 #include "gl/program_cache.h"
 #include "gl/program_limits.h"
 #include "voxelize/voxel_gl.h"
@@ -79,6 +80,27 @@ void accumulateTriangles(const GpuScene& scene, const VoxelGrid& grid, const GlB
                     GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
+// The grid's name and the way out, as the estimate's refusal gives them.
+std::string gridRefusal(const VoxelGrid& grid, const std::string& why) {
+    return "voxel grid " + std::to_string(grid.resolution.x) + "x" + std::to_string(grid.resolution.y) + "x" +
+           std::to_string(grid.resolution.z) + " " + why + ": lower --voxel-res or use vct.clipmap.levels";
+}
+
+// The estimate below passes a grid the machine's memory holds, but a GL may still refuse one of
+// its textures (llvmpipe caps a single texture's size: a 1024x513x1024 accumulator of 2 GB):
+// a refusal as clear as the estimate's, not a bare GL error at the pass's end.
+void refuseUnallocatedGrid(const VoxelGrid& grid) {
+    const std::vector<std::string> pending = GlContext::shared().pendingErrors();
+    if (std::none_of(pending.begin(), pending.end(),
+                     [](const std::string& e) { return e.find("GL_OUT_OF_MEMORY") != std::string::npos; }))
+        return;
+    try {
+        GlContext::shared().checkErrors("voxelize");
+    } catch (const std::exception& e) {
+        throw std::runtime_error(gridRefusal(grid, std::string("could not be allocated (") + e.what() + ")"));
+    }
+}
+
 }  // namespace
 
 VoxelGrid voxelizeScene(const GpuScene& scene, const Bounds3& region, int voxelRes, const ParamMap& params,
@@ -105,11 +127,9 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     const double bytesPerVoxel = !attributes ? 16.0 : twoSided ? 78.0 : 66.0;
     const double needBytes = bytesPerVoxel * voxels, haveBytes = double(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
     if (haveBytes > 0.0 && needBytes > 0.5 * haveBytes)
-        throw std::runtime_error("voxel grid " + std::to_string(grid.resolution.x) + "x" +
-                                 std::to_string(grid.resolution.y) + "x" + std::to_string(grid.resolution.z) +
-                                 " needs about " + std::to_string(int(needBytes / 1e9)) + " GB, more than half of "
-                                 "this machine's " + std::to_string(int(haveBytes / 1e9)) +
-                                 " GB: lower --voxel-res or use vct.clipmap.levels");
+        throw std::runtime_error(gridRefusal(grid, "needs about " + std::to_string(int(needBytes / 1e9)) +
+                                                       " GB, more than half of this machine's " +
+                                                       std::to_string(int(haveBytes / 1e9)) + " GB"));
     const VoxelPrecision precision = voxelSettings().read(params).precision;
     const float maxEmission = attributes ? needs.maxEmission : 0.f;
     const bool hasEmission = maxEmission > 0.f;
@@ -143,6 +163,7 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
         const GLuint zero = 0;
         glClearTexImage(acc[size_t(i)].id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     }
+    refuseUnallocatedGrid(grid);
     // Big-triangle list: header {count, -, -, occupied voxels}, then triangle ids.
     std::vector<uint32_t> header = {0, 1, 1, 0};
     header.resize(4 + size_t(std::max(1, scene.triangleCount)), 0);
@@ -177,6 +198,7 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
         grid.twoSided = createTexture3D(GL_RGBA16_SNORM, res.x, res.y, res.z);
         bindImage3D(gpu::VOX_IMAGE_RESOLVE_TWO_SIDED, grid.twoSided.id(), 0, GL_WRITE_ONLY, GL_RGBA16_SNORM);
     }
+    refuseUnallocatedGrid(grid);
     for (int i = 0; i < gpu::VOX_ACC_COUNT; ++i)
         if (acc[size_t(i)]) glBindTextureUnit(GLuint(i), acc[size_t(i)].id());
     bindImage3D(gpu::VOX_IMAGE_RESOLVE_OPACITY, grid.opacity.id(), 0, GL_WRITE_ONLY, GL_R16F);
