@@ -39,10 +39,6 @@ uniform ivec3 uResolution;
 uniform uint uTriangleCount;
 uniform uint uBigBase;  // big pass: first list entry of this dispatch
 
-// Half-size of the tested box in voxel units: 0.5 plus a margin well above float rounding
-// of voxel coordinates (~1e-5 at 1024^3) and well below anything visible.
-const float VOX_BOX_GROWTH = 1.0e-4;
-
 struct Tri {
     vec3 p[3];      // voxel coordinates
     vec3 n[3];      // vertex normals (world = voxel orientation; unit)

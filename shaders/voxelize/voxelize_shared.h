@@ -53,6 +53,10 @@ VCT_CONST int VOX_BINDING_BIGLIST = 6;
 // - emission per channel in a 64-bit (hi, lo) pair with carry, 2^-12 absolute resolution,
 //   clamped to VOX_EMISSION_MAX: ~280k full-weight contributions before overflow.
 VCT_CONST int VOX_WEIGHT_MAX = 16;
+// The tested box's half-size growth in voxel units (the triangle/voxel overlap test, on the GPU
+// and in the sparse voxelizer's src/vdb/triangle_box.h): 0.5 plus a margin well above float
+// rounding of voxel coordinates (~1e-5 at 1024^3) and well below anything visible.
+VCT_CONST float VOX_BOX_GROWTH = 1.0e-4f;
 VCT_CONST float VOX_ALBEDO_SCALE = 4095.0;
 VCT_CONST float VOX_NORMAL_SCALE = 4095.0;
 VCT_CONST float VOX_EMISSION_SCALE = 4096.0;

@@ -36,12 +36,12 @@ namespace {
 
 using namespace vdbdetail;
 
-// Fixed point of voxelize_shared.h (VOX_*): integer weight ~ area in voxel faces x 16.
-constexpr int kWeightMax = 16;
-constexpr float kAlbedoScale = 4095.f;
-constexpr float kNormalScale = 4095.f;
-constexpr float kEmissionScale = 4096.f;
-constexpr float kEmissionMax = 1.0e9f;
+// The GPU voxelizer's fixed point (voxelize_shared.h): integer weight ~ area in voxel faces x 16.
+constexpr int kWeightMax = gpu::VOX_WEIGHT_MAX;
+constexpr float kAlbedoScale = gpu::VOX_ALBEDO_SCALE;
+constexpr float kNormalScale = gpu::VOX_NORMAL_SCALE;
+constexpr float kEmissionScale = gpu::VOX_EMISSION_SCALE;
+constexpr float kEmissionMax = gpu::VOX_EMISSION_MAX;
 
 struct VoxelSums {
     uint64_t albedo[3] = {0, 0, 0};

@@ -4,6 +4,8 @@
 // sparse and the dense voxelizers mark the same voxels.
 #pragma once
 
+#include "voxelize/voxelize_shared.h"
+
 #include <glm/glm.hpp>
 
 #include <algorithm>
@@ -11,8 +13,8 @@
 
 namespace vct {
 
-// Half-size growth of the tested box in voxel units (voxelize_pass.glsl VOX_BOX_GROWTH).
-constexpr float kVoxBoxGrowth = 1.0e-4f;
+// Half-size growth of the tested box in voxel units, the GPU voxelizer's own.
+constexpr float kVoxBoxGrowth = gpu::VOX_BOX_GROWTH;
 
 // `p` are the triangle's corners in voxel units, `faceN` = cross(p1 - p0, p2 - p0).
 inline bool triangleOverlapsVoxel(const glm::vec3 p[3], const glm::vec3& faceN, const glm::vec3& boxCenter) {
