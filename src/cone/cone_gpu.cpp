@@ -122,8 +122,8 @@ void dispatchStage(GLuint ubo, GLint stage, GLuint image, GLenum format, int w, 
 // A stage over the pixels a previous stage listed: the own stage (count at entry 0 of the
 // list's header) or the wide stage (entry 1). Their count comes back to the CPU (four bytes)
 // rather than feeding an indirect dispatch: llvmpipe was seen to read indirect arguments
-// before the pass that wrote them had finished (voxelize.cpp).
-void dispatchListStage(GLuint ubo, GLint stage, GLuint list, GLuint image, GLenum format) {
+// before the pass that wrote them had finished (voxelize.cpp). Returns the count.
+GLuint dispatchListStage(GLuint ubo, GLint stage, GLuint list, GLuint image, GLenum format) {
     GLuint listed = 0;
     const GLintptr countAt = (stage == gpu::CONE_STAGE_WIDE ? 1 : 0) * GLintptr(sizeof(GLuint));
     glGetNamedBufferSubData(list, countAt, sizeof(listed), &listed);
@@ -134,6 +134,7 @@ void dispatchListStage(GLuint ubo, GLint stage, GLuint list, GLuint image, GLenu
         dispatchStageGroups(ubo, stage, image, format, std::min(maxGroups, (listed - base + perGroup - 1) / perGroup),
                             1);
     }
+    return listed;
 }
 
 }  // namespace
@@ -168,10 +169,12 @@ GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlB
         // One invocation per region of pixels that share their four nearest blocks
         // (cone_resolve.glsl): the blocks and one more region on each axis.
         dispatchStage(ubo, gpu::CONE_STAGE_RESOLVE, out.id(), format, tw + 1, th + 1);
-        dispatchListStage(ubo, gpu::CONE_STAGE_WIDE, own.id(), out.id(), format);
+        // Only the wide stage lists pixels for the own stage: without silhouettes, no second
+        // count to read back.
+        const GLuint wide = dispatchListStage(ubo, gpu::CONE_STAGE_WIDE, own.id(), out.id(), format);
         glBindImageTexture(gpu::CONE_IMAGE_TRACED, 0, 0, GL_FALSE, 0, GL_READ_ONLY, format);
         glUseProgram(program);
-        dispatchListStage(ubo, gpu::CONE_STAGE_OWN, own.id(), out.id(), format);
+        if (wide > 0) dispatchListStage(ubo, gpu::CONE_STAGE_OWN, own.id(), out.id(), format);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_OWN_LIST, 0);
     }
     glUseProgram(0);

@@ -70,15 +70,15 @@ void validateScene(const Scene& scene) {
 
 namespace {
 
-// The lights as the shaders read them; the shadow pass fills in the shadow fields.
-// The G-buffer's geometric normal of triangle t: unit, (0, 1, 0) for a degenerate one (the
-// loader drops those, but a scene built in code may keep them).
+// The G-buffer's geometric normal of triangle t: Scene::geometricNormal, (0, 1, 0) for a
+// degenerate one, whose normal does not exist (the loader drops those, but a scene built in
+// code may keep them).
 glm::vec3 triangleGeometricNormal(const Scene& scene, size_t t) {
-    const glm::uvec3& i = scene.triangles[t];
-    const glm::vec3 n = glm::cross(scene.positions[i.y] - scene.positions[i.x], scene.positions[i.z] - scene.positions[i.x]);
-    return glm::length(n) > 0.f ? glm::normalize(n) : glm::vec3(0.f, 1.f, 0.f);
+    const glm::vec3 n = scene.geometricNormal(t);
+    return std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z) ? n : glm::vec3(0.f, 1.f, 0.f);
 }
 
+// The lights as the shaders read them; the shadow pass fills in the shadow fields.
 std::vector<gpu::GpuLight> gpuLights(const Scene& scene) {
     std::vector<gpu::GpuLight> lights;
     for (const Light& l : scene.lights) {

@@ -256,7 +256,6 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
     out.opacityLevels = {out.opacity};
     if (!attributes && !lit) {
         // Opacity alone: the occupied set is the whole answer.
-        perThread.clear();
         out.stats.voxelizeSeconds = secondsSince(t0);
         updateSparseMemoryStats(out);
         return out;
