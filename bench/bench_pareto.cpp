@@ -12,14 +12,17 @@
 //                [--voxel-res N] [--case NAME]...   (cornell-ao, cornell-gi, sponza-ao,
 //                sponza-gi, overhang-ao, emitter-gi; default all)
 //                [--vct "KEY=VALUE ..."]...   VCT variants to measure instead of the default
-//                ones (each a space-separated list of --param settings; "" is the defaults)
+//                ones (each a space-separated list of --param settings, and voxel-res=N for a
+//                grid other than --voxel-res's; "" is the defaults)
 //                [--passes]   also print each point's median time per pass
 //
 // AO alone fits its voxels to the visible points by default (vct.region=auto), and on Sponza
 // and the off-screen scene that region follows the camera, so the next frame voxelizes again
 // and frame_ms counts it; the default vct.region=scene variants keep one grid over the scene
 // for every frame (GI's region is the scene already: those run for AO only; a --vct variant runs
-// for every case).
+// for every case). The AO variants on a 512^3 scene grid show where VCT's error goes when the
+// grid refines (its voxel error falls slowly, docs/convergence.md): the cold cost grows with the
+// grid, the frame's cone pass much less (steps of two footprints, a trace scale of 4 or 6).
 //
 // The truth is the reference at --truth-spp (256) with another seed than the points', so a
 // point's error is its own noise and bias, not shared samples. Sponza: the view of
@@ -106,6 +109,7 @@ int main(int argc, char** argv) {
         std::string label;
         Settings settings;
         bool aoOnly = false;  // GI's region is the scene already: a scene-wide variant repeats the default
+        int voxelRes = 0;     // 0: --voxel-res
     };
     std::vector<Variant> vctVariants;
     bool printPasses = false;
@@ -130,6 +134,7 @@ int main(int argc, char** argv) {
         else if (a == "--vct") {
             // A variant named here runs for every case.
             Settings settings;
+            int res = 0;
             std::istringstream words(value);
             for (std::string w; words >> w;) {
                 const size_t eq = w.find('=');
@@ -137,10 +142,18 @@ int main(int argc, char** argv) {
                     std::cerr << "bench_pareto: --vct expects KEY=VALUE words, got '" << w << "'\n";
                     return 2;
                 }
+                if (w.substr(0, eq) == "voxel-res") {
+                    res = std::atoi(w.c_str() + eq + 1);
+                    if (res < 8 || res > 1024) {
+                        std::cerr << "bench_pareto: voxel-res must be in [8, 1024], got '" << w << "'\n";
+                        return 2;
+                    }
+                    continue;
+                }
                 settings.push_back({w.substr(0, eq), w.substr(eq + 1)});
             }
             const std::string words0 = value;
-            vctVariants.push_back({words0.empty() ? "vct" : "vct " + words0, settings});
+            vctVariants.push_back({words0.empty() ? "vct" : "vct " + words0, settings, false, res});
         }
         else {
             std::cerr << "bench_pareto: unknown option " << a << "\n";
@@ -163,7 +176,15 @@ int main(int argc, char** argv) {
                         true},
                        {"vct region=scene step=1 trace-scale=8",
                         {{"vct.region", "scene"}, {"vct.step", "1"}, {"vct.trace-scale", "8"}},
-                        true}};
+                        true},
+                       {"vct 512^3 region=scene step=2 trace-scale=4",
+                        {{"vct.region", "scene"}, {"vct.step", "2"}, {"vct.trace-scale", "4"}},
+                        true,
+                        512},
+                       {"vct 512^3 region=scene step=2 trace-scale=6",
+                        {{"vct.region", "scene"}, {"vct.step", "2"}, {"vct.trace-scale", "6"}},
+                        true,
+                        512}};
     if (aoSize < 8 || giSize < 8 || truthSpp < 1 || maxSpp < 1 || runs < 1 || voxelRes < 8) {
         std::cerr << "bench_pareto: sizes >= 8, spp and runs >= 1\n";
         return 2;
@@ -177,7 +198,7 @@ int main(int argc, char** argv) {
                                {"sponza-gi", shared + "/mcguire_sponza.glb", true, 1.f, 0.5f, true},
                                {"overhang-ao", src + "/scenes/offscreen_overhang.gltf", false, 0.5f, 0.f},
                                {"emitter-gi", src + "/scenes/offscreen_gi_emitter.gltf", true, 0.5f, 0.f}};
-    std::printf("renderer: %s, %u cores; AO %dx%d, GI %dx%d, %d^3 voxels, truth %d spp, median of %d cold runs after "
+    std::printf("renderer: %s, %u cores; AO %dx%d, GI %dx%d, %d^3 voxels (unless a variant says), truth %d spp, median of %d cold runs after "
                 "a warm-up\n",
                 GlContext::shared().info().renderer.c_str(), std::thread::hardware_concurrency(), aoSize, aoSize,
                 giSize, giSize, voxelRes, truthSpp, runs);
@@ -232,6 +253,7 @@ int main(int argc, char** argv) {
         for (const Variant& v : vctVariants) {
             if (c.gi && v.aoOnly) continue;
             RenderRequest r = request("vct", 1, 0);
+            if (v.voxelRes > 0) r.voxelRes = v.voxelRes;
             for (const auto& [k, value] : v.settings) r.params.set(k, value);
             variants.push_back({v.label, r});
         }
