@@ -208,6 +208,7 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, int voxelRes) {
 SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int voxelRes, bool lit, bool attributes) {
     ensureOpenVdb();
     checkScene(scene);
+    attributes = attributes || lit;  // injection reads them
     const auto t0 = std::chrono::steady_clock::now();
     const VoxelGrid layout = makeGridLayout(region, voxelRes);
     SparseVoxelScene out;
@@ -227,7 +228,7 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
                           std::unique_ptr<ThreadSums>& ts = perThread.local();
                           if (!ts) {
                               ts = std::make_unique<ThreadSums>();
-                              ts->attributes = attributes || lit;
+                              ts->attributes = attributes;
                           }
                           openvdb::tree::ValueAccessor<openvdb::Int32Tree> acc(ts->slots);
                           Tri tri;
@@ -254,7 +255,7 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
     out.opacity = makeGrid(opacity, "opacity");
     out.opacity->setGridClass(openvdb::GRID_FOG_VOLUME);
     out.opacityLevels = {out.opacity};
-    if (!attributes && !lit) {
+    if (!attributes) {
         // Opacity alone: the occupied set is the whole answer.
         out.stats.voxelizeSeconds = secondsSince(t0);
         updateSparseMemoryStats(out);
