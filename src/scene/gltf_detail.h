@@ -23,6 +23,16 @@
 
 namespace vct::gltf_detail {
 
+// The texture coordinates a material's textures read: attribute TEXCOORD_<set> through the
+// affine map `transform` (KHR_texture_transform: uv' = offset + rotate(scale * uv), the
+// identity without it). Applied to the vertices at load, where it is exact: the map is affine,
+// so interpolating the mapped coordinates equals mapping the interpolated ones.
+struct UvMapping {
+    int set = 0;
+    glm::mat3 transform{1.f};  // column-major, acting on (u, v, 1)
+    bool operator==(const UvMapping& o) const { return set == o.set && transform == o.transform; }
+};
+
 // One model on its way to a Scene: the elements converted so far and what later elements
 // need of them.
 struct LoadContext {
@@ -56,6 +66,9 @@ struct LoadContext {
         std::vector<int> nodeChain;                 // root first, the mesh's own node last
     };
     std::vector<PlacedMesh> placedMeshes;
+    // Per glTF material: the texture coordinates its textures read (convertMaterials), which
+    // addPrimitive bakes into the scene's one set of UVs.
+    std::vector<UvMapping> materialUv;
 
     LoadContext(const tinygltf::Model& m, const std::string& p) : model(m), path(p) {}
 
@@ -82,6 +95,15 @@ std::vector<double> readAccessor(const LoadContext& load, int index, const std::
                                  size_t* countOut, int* componentTypeOut = nullptr);
 // Reads a VEC3 attribute and rejects NaN or infinite elements.
 std::vector<glm::vec3> readVec3(const LoadContext& load, int accessor, const std::string& ctx);
+
+// Extensions (gltf_extensions.cpp). Refuses a model that requires an extension the loader
+// does not implement; warns of those it uses and the loader leaves out.
+void checkExtensions(LoadContext& load);
+// The refusal's wording for extension names (empty when every one is implemented), and the
+// same read straight from a file tinygltf could not parse (empty when it cannot tell): a
+// file whose geometry lives in an extension (Draco) fails tinygltf's accessor checks first.
+std::string unimplementedRequiredExtension(const std::vector<std::string>& required);
+std::string unimplementedRequiredExtensionInFile(const std::string& path, bool binary);
 
 // Materials and textures (gltf_materials.cpp).
 void convertMaterials(LoadContext& load);

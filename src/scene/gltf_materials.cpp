@@ -94,6 +94,48 @@ int textureFor(LoadContext& load, int gltfTexture, const std::string& ctx) {
     return mapped;
 }
 
+// Element k of a KHR_texture_transform member that must be `n` finite numbers.
+glm::vec2 transformPair(const LoadContext& load, const tinygltf::Value& ext, const char* key, glm::vec2 fallback,
+                        const std::string& where) {
+    if (!ext.Has(key)) return fallback;
+    const tinygltf::Value& v = ext.Get(key);
+    if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
+        load.fail(where + ": KHR_texture_transform " + key + " must be two numbers");
+    const glm::vec2 out(float(v.Get(0).GetNumberAsDouble()), float(v.Get(1).GetNumberAsDouble()));
+    if (!std::isfinite(out.x) || !std::isfinite(out.y))
+        load.fail(where + ": KHR_texture_transform " + key + " is not finite");
+    return out;
+}
+
+// The coordinates texture `info` reads: its texCoord, and KHR_texture_transform's offset,
+// rotation (counter-clockwise in UV space), scale and texCoord override. As the extension
+// defines them: u' = s_u u cos r + s_v v sin r + o_u, v' = -s_u u sin r + s_v v cos r + o_v.
+UvMapping uvMappingOf(const LoadContext& load, const tinygltf::TextureInfo& info, const std::string& where) {
+    UvMapping m;
+    m.set = info.texCoord;
+    const auto found = info.extensions.find("KHR_texture_transform");
+    if (found != info.extensions.end() && found->second.IsObject()) {
+        const tinygltf::Value& ext = found->second;
+        const glm::vec2 offset = transformPair(load, ext, "offset", glm::vec2(0.f), where);
+        const glm::vec2 scale = transformPair(load, ext, "scale", glm::vec2(1.f), where);
+        float rotation = 0.f;
+        if (ext.Has("rotation")) {
+            if (!ext.Get("rotation").IsNumber()) load.fail(where + ": KHR_texture_transform rotation must be a number");
+            rotation = float(ext.Get("rotation").GetNumberAsDouble());
+            if (!std::isfinite(rotation)) load.fail(where + ": KHR_texture_transform rotation is not finite");
+        }
+        if (ext.Has("texCoord")) {
+            if (!ext.Get("texCoord").IsInt()) load.fail(where + ": KHR_texture_transform texCoord must be an integer");
+            m.set = ext.Get("texCoord").GetNumberAsInt();
+        }
+        const float c = std::cos(rotation), s = std::sin(rotation);
+        m.transform = glm::mat3(glm::vec3(scale.x * c, -scale.x * s, 0.f), glm::vec3(scale.y * s, scale.y * c, 0.f),
+                                glm::vec3(offset, 1.f));
+    }
+    if (m.set < 0) load.fail(where + ": texCoord " + std::to_string(m.set) + " is negative");
+    return m;
+}
+
 }  // namespace
 
 void convertMaterials(LoadContext& load) {
@@ -121,6 +163,19 @@ void convertMaterials(LoadContext& load) {
                 textureFor(load, m.pbrMetallicRoughness.baseColorTexture.index, where + " base colour");
         if (m.emissiveTexture.index >= 0)
             out.emissiveTexture = textureFor(load, m.emissiveTexture.index, where + " emissive");
+        // One set of UVs per vertex: the base colour's mapping (the alpha test reads it too),
+        // else the emissive texture's.
+        UvMapping uv;
+        if (out.baseColorTexture >= 0) {
+            uv = uvMappingOf(load, m.pbrMetallicRoughness.baseColorTexture, where + " base colour");
+            if (out.emissiveTexture >= 0 && !(uvMappingOf(load, m.emissiveTexture, where + " emissive") == uv))
+                load.scene.warnings.push_back(where +
+                                              ": the emissive texture reads other texture coordinates than the base "
+                                              "colour's (texCoord or KHR_texture_transform); both read the base colour's");
+        } else if (out.emissiveTexture >= 0) {
+            uv = uvMappingOf(load, m.emissiveTexture, where + " emissive");
+        }
+        load.materialUv.push_back(uv);
         out.doubleSided = m.doubleSided;
         out.alphaMask = m.alphaMode == "MASK";
         out.alphaCutoff = float(m.alphaCutoff);

@@ -110,19 +110,26 @@ void addPrimitive(LoadContext& load, int meshIndex, int primIndex, const glm::ma
         normals = readVec3(load, attr("NORMAL"), ctx + ", NORMAL");
         checkCount("NORMAL", normals.size());
     }
-    std::vector<glm::vec2> uvs(positions.size(), glm::vec2(0.f));
-    if (attr("TEXCOORD_0") >= 0) {
+    const uint32_t material = materialFor(load, prim.material, ctx);
+    // The texture coordinates the material's textures read, mapped as they read them (a
+    // primitive without that attribute reads the mapped (0, 0) everywhere).
+    const UvMapping mapping = prim.material >= 0 && size_t(prim.material) < load.materialUv.size()
+                                  ? load.materialUv[size_t(prim.material)]
+                                  : UvMapping{};
+    const std::string uvName = "TEXCOORD_" + std::to_string(mapping.set);
+    std::vector<glm::vec2> uvs(positions.size(), glm::vec2(mapping.transform[2]));
+    if (attr(uvName.c_str()) >= 0) {
         size_t count = 0;
-        std::vector<double> raw = readAccessor(load, attr("TEXCOORD_0"), ctx + ", TEXCOORD_0", 2, &count);
-        checkCount("TEXCOORD_0", count);
+        std::vector<double> raw = readAccessor(load, attr(uvName.c_str()), ctx + ", " + uvName, 2, &count);
+        checkCount(uvName.c_str(), count);
         for (size_t i = 0; i < count; ++i) {
-            uvs[i] = glm::vec2(float(raw[2 * i]), float(raw[2 * i + 1]));
-            if (!std::isfinite(uvs[i].x) || !std::isfinite(uvs[i].y))
-                load.fail(accessorLabel(attr("TEXCOORD_0"), ctx + ", TEXCOORD_0") + ": element " + std::to_string(i) +
-                          " is not finite");
+            const glm::vec2 uv(float(raw[2 * i]), float(raw[2 * i + 1]));
+            if (!std::isfinite(uv.x) || !std::isfinite(uv.y))
+                load.fail(accessorLabel(attr(uvName.c_str()), ctx + ", " + uvName) + ": element " +
+                          std::to_string(i) + " is not finite");
+            uvs[i] = glm::vec2(mapping.transform * glm::vec3(uv, 1.f));
         }
     }
-    const uint32_t material = materialFor(load, prim.material, ctx);
     const std::vector<glm::uvec3> tris = primitiveTriangles(load, prim, positions.size(), ctx);
 
     const glm::mat3 linear(worldFromLocal);

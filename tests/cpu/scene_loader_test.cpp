@@ -59,6 +59,7 @@ struct HandGltf {
     std::vector<float> positions;   // xyz per vertex
     std::vector<float> normals;     // empty = no NORMAL
     std::vector<uint16_t> indices;  // empty = non-indexed
+    std::vector<std::vector<float>> texcoords;  // TEXCOORD_0, TEXCOORD_1, ...: uv per vertex
     int mode = 4;
     int positionCountOverride = -1;
     std::string nodes = R"([{"mesh": 0, "name": "n"}])";
@@ -91,6 +92,16 @@ struct HandGltf {
             accessors << R"(,{"bufferView": )" << view
                       << R"(, "componentType": 5126, "type": "VEC3", "count": )" << normals.size() / 3 << "}";
             attributes << R"(, "NORMAL": )" << accessor;
+            ++view;
+            ++accessor;
+        }
+        for (size_t set = 0; set < texcoords.size(); ++set) {
+            at = buffer.size();
+            append(buffer, texcoords[set]);
+            addView(at, texcoords[set].size() * 4, false);
+            accessors << R"(,{"bufferView": )" << view
+                      << R"(, "componentType": 5126, "type": "VEC2", "count": )" << texcoords[set].size() / 2 << "}";
+            attributes << R"(, "TEXCOORD_)" << set << R"(": )" << accessor;
             ++view;
             ++accessor;
         }
@@ -490,6 +501,135 @@ TEST_F(SceneLoader, MaterialFactorsEmissiveStrengthAndTexture) {
               (std::vector<uint8_t>{255, 0, 0, 255}));
     EXPECT_EQ(std::vector<uint8_t>(t.rgba.begin() + 12, t.rgba.end()),
               (std::vector<uint8_t>{10, 20, 30, 255}));
+}
+
+// extensionsRequired names what a file cannot be read without (Draco or meshopt geometry, KTX2
+// images, transformed texture coordinates): a loader that lacks one must refuse the file.
+TEST_F(SceneLoader, RequiredExtensionTheLoaderLacksIsRefusedByName) {
+    HandGltf g;
+    g.positions = kTriangle;
+    g.extraTop = R"(, "extensionsUsed": ["EXT_meshopt_compression"], "extensionsRequired": ["EXT_meshopt_compression"])";
+    const std::string path = write("meshopt.gltf", g.json());
+    const std::string msg = loadError(path);
+    EXPECT_CONTAINS(msg, path);
+    EXPECT_CONTAINS(msg, "requires the glTF extension EXT_meshopt_compression");
+
+    // Draco leaves the index accessor without a buffer view, which tinygltf rejects before the
+    // loader sees the model: the message still names the extension, the cause.
+    g.indices = {0, 1, 2};
+    g.extraTop.clear();
+    std::string text = g.json();
+    const std::string indexView = R"({"bufferView": 1, "componentType": 5123)";
+    ASSERT_NE(text.find(indexView), std::string::npos);
+    text.replace(text.find(indexView), indexView.size(), R"({"componentType": 5123)");
+    const std::string plain = loadError(write("plain_broken.gltf", text));
+    EXPECT_CONTAINS(plain, "glTF JSON");  // tinygltf's own message: no extension involved
+    g.extraTop = R"(, "extensionsUsed": ["KHR_draco_mesh_compression"],
+        "extensionsRequired": ["KHR_draco_mesh_compression"])";
+    text = g.json();
+    text.replace(text.find(indexView), indexView.size(), R"({"componentType": 5123)");
+    const std::string draco = loadError(write("draco.gltf", text));
+    EXPECT_CONTAINS(draco, "requires the glTF extension KHR_draco_mesh_compression");
+    // The same from a GLB container (the JSON chunk read on its own).
+    vct::SceneBuilder b("glb");
+    b.addMaterial("m", glm::vec3(0.5f));
+    b.addTransformedBox("box", vct::NodeTransform{}, 0);
+    tinygltf::Model model = b.build();
+    model.extensionsRequired.push_back("KHR_texture_basisu");
+    model.extensionsUsed.push_back("KHR_texture_basisu");
+    const std::string glb = (dir / "basisu.glb").string();
+    tinygltf::TinyGLTF().WriteGltfSceneToFile(&model, glb, true, true, false, true);
+    EXPECT_CONTAINS(loadError(glb), "requires the glTF extension KHR_texture_basisu");
+}
+
+TEST_F(SceneLoader, RequiredExtensionsTheLoaderImplementsLoad) {
+    HandGltf g;
+    g.positions = kTriangle;
+    g.extraTop = R"(, "extensionsRequired": ["KHR_lights_punctual", "KHR_materials_emissive_strength",
+        "KHR_mesh_quantization", "KHR_texture_transform"],
+        "extensionsUsed": ["KHR_lights_punctual", "KHR_materials_emissive_strength",
+        "KHR_mesh_quantization", "KHR_texture_transform"])";
+    const Scene s = vct::loadScene(write("implemented.gltf", g.json()));
+    EXPECT_EQ(s.triangleCount(), 1u);
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
+}
+
+TEST_F(SceneLoader, ExtensionsUsedButNotImplementedAreAWarning) {
+    HandGltf g;
+    g.positions = kTriangle;
+    g.extraTop = R"(, "extensionsUsed": ["KHR_materials_transmission", "KHR_lights_punctual", "KHR_materials_ior"])";
+    const Scene s = vct::loadScene(write("used.gltf", g.json()));
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_CONTAINS(s.warnings[0], "KHR_materials_transmission, KHR_materials_ior");
+    EXPECT_EQ(s.warnings[0].find("KHR_lights_punctual"), std::string::npos);
+}
+
+// KHR_texture_transform's own example (offset (0, 1), rotation 90 degrees, scale 0.5): "only
+// the lower left quadrant of the source image, rotated clockwise 90 degrees". The unit
+// triangle's corners (0, 0), (1, 0), (0, 1) land on (0, 1), (0, 0.5), (0.5, 1).
+TEST_F(SceneLoader, TextureTransformMapsTheTextureCoordinates) {
+    const unsigned char texel[3] = {200, 100, 50};
+    ASSERT_NE(stbi_write_png((dir / "t.png").string().c_str(), 1, 1, 3, texel, 3), 0);
+    HandGltf g;
+    g.positions = kTriangle;
+    g.texcoords = {{0, 0, 1, 0, 0, 1}};
+    g.materialField = ", \"material\": 0";
+    const std::string images = R"(, "textures": [{"source": 0}], "images": [{"uri": "t.png"}])";
+    g.extraTop = R"(, "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0, "extensions":
+        {"KHR_texture_transform": {"offset": [0, 1], "rotation": 1.5707963267948966, "scale": [0.5, 0.5]}}}}}])" +
+                 images;
+    const Scene s = vct::loadScene(write("transform.gltf", g.json()));
+    ASSERT_EQ(s.uvs.size(), 3u);
+    const glm::vec2 expected[3] = {{0.f, 1.f}, {0.f, 0.5f}, {0.5f, 1.f}};
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(s.uvs[size_t(i)].x, expected[i].x, 1e-6f) << "vertex " << i;
+        EXPECT_NEAR(s.uvs[size_t(i)].y, expected[i].y, 1e-6f) << "vertex " << i;
+    }
+
+    // Scale acts before the rotation: (u, v) -> (2 v, -u / 2) + (0.25, 0.5) for a scale of
+    // (0.5, 2) turned 90 degrees.
+    g.extraTop = R"(, "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0, "extensions":
+        {"KHR_texture_transform": {"offset": [0.25, 0.5], "rotation": 1.5707963267948966, "scale": [0.5, 2]}}}}}])" +
+                 images;
+    const Scene t = vct::loadScene(write("transform2.gltf", g.json()));
+    const glm::vec2 expected2[3] = {{0.25f, 0.5f}, {0.25f, 0.f}, {2.25f, 0.5f}};
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(t.uvs[size_t(i)].x, expected2[i].x, 1e-6f) << "vertex " << i;
+        EXPECT_NEAR(t.uvs[size_t(i)].y, expected2[i].y, 1e-6f) << "vertex " << i;
+    }
+
+    g.extraTop = R"(, "materials": [{"name": "bad", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0,
+        "extensions": {"KHR_texture_transform": {"scale": [1, 2, 3]}}}}}])" + images;
+    const std::string msg = loadError(write("bad_transform.gltf", g.json()));
+    EXPECT_CONTAINS(msg, "material 0 'bad' base colour: KHR_texture_transform scale must be two numbers");
+}
+
+// A texture's texCoord picks the attribute set; KHR_texture_transform's texCoord overrides it.
+TEST_F(SceneLoader, TexCoordPicksTheAttributeSet) {
+    const unsigned char texel[3] = {200, 100, 50};
+    ASSERT_NE(stbi_write_png((dir / "t.png").string().c_str(), 1, 1, 3, texel, 3), 0);
+    HandGltf g;
+    g.positions = kTriangle;
+    g.texcoords = {{0, 0, 0, 0, 0, 0}, {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f}};
+    g.materialField = ", \"material\": 0";
+    const std::string images = R"(, "textures": [{"source": 0}], "images": [{"uri": "t.png"}])";
+    g.extraTop = R"(, "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0, "texCoord": 1}}}])" +
+                 images;
+    const Scene s = vct::loadScene(write("set1.gltf", g.json()));
+    ASSERT_EQ(s.uvs.size(), 3u);
+    EXPECT_EQ(s.uvs[2], glm::vec2(0.5f, 0.6f));
+    g.extraTop = R"(, "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0, "texCoord": 1,
+        "extensions": {"KHR_texture_transform": {"texCoord": 0}}}}}])" + images;
+    EXPECT_EQ(vct::loadScene(write("override.gltf", g.json())).uvs[2], glm::vec2(0.f));
+
+    // An emissive texture that reads other coordinates than the base colour's is read with
+    // the base colour's, and the loader says so.
+    g.extraTop = R"(, "materials": [{"name": "two", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0,
+        "texCoord": 1}}, "emissiveTexture": {"index": 0}}])" + images;
+    const Scene two = vct::loadScene(write("two_sets.gltf", g.json()));
+    EXPECT_EQ(two.uvs[2], glm::vec2(0.5f, 0.6f));
+    ASSERT_EQ(two.warnings.size(), 1u);
+    EXPECT_CONTAINS(two.warnings[0], "material 0 'two': the emissive texture reads other texture coordinates");
 }
 
 TEST_F(SceneLoader, GlbAndGltfFromTheBuilderLoadTheSame) {
