@@ -199,7 +199,7 @@ int main(int argc, char** argv) {
                                {"overhang-ao", src + "/scenes/offscreen_overhang.gltf", false, 0.5f, 0.f},
                                {"emitter-gi", src + "/scenes/offscreen_gi_emitter.gltf", true, 0.5f, 0.f}};
     std::printf("renderer: %s, %u cores; AO %dx%d, GI %dx%d, %d^3 voxels (unless a variant says), truth %d spp, median of %d cold runs after "
-                "a warm-up\n",
+                "a warm-up, in rounds of every point\n",
                 GlContext::shared().info().renderer.c_str(), std::thread::hardware_concurrency(), aoSize, aoSize,
                 giSize, giSize, voxelRes, truthSpp, runs);
     for (const Case& c : cases) {
@@ -258,33 +258,43 @@ int main(int argc, char** argv) {
             variants.push_back({v.label, r});
         }
 
+        // Every point's warm-up first (its image is the one scored), then the timed runs in
+        // rounds, each round every point once: a machine whose speed drifts during the case
+        // (a shared host, thermal limits) slows every point alike instead of the points that
+        // happen to run late, so the equal-error ratios compare like with like.
         std::vector<Point> points;
         for (auto& [label, req] : variants) {
             std::fprintf(stderr, "%s: %s\n", c.name.c_str(), label.c_str());
-            const RenderResult first = session.render(req);  // warm-up; its image is the one scored
-            std::vector<double> totals, frames;
-            std::map<std::string, std::vector<double>> passTimes;
-            for (int run = 0; run < runs; ++run) {
-                RenderRequest timed = req;
-                timed.reuseSceneData = false;  // its own voxels or BVH count in its cold time
-                const RenderResult r = session.render(timed);
-                totals.push_back(r.totalMs);
-                frames.push_back(r.frameMs);
-                for (const PassTiming& t : r.passes) passTimes[t.name].push_back(t.wallMs);
-            }
+            const RenderResult first = session.render(req);
             Point p;
             p.label = label;
             p.reference = req.ao == "reference" || req.gi == "reference";
             p.spp = req.spp;
             p.rmse = computeErrorMetrics(first.aovs.at(aov), truth, &valid).rmse;
-            p.frameMs = medianOf(frames);
-            p.timeMs = medianOf(totals);
-            for (const auto& [name, t] : passTimes) {
+            points.push_back(p);
+        }
+        std::vector<std::vector<double>> totals(variants.size()), frames(variants.size());
+        std::vector<std::map<std::string, std::vector<double>>> passTimes(variants.size());
+        for (int run = 0; run < runs; ++run) {
+            std::fprintf(stderr, "%s: timed round %d of %d\n", c.name.c_str(), run + 1, runs);
+            for (size_t v = 0; v < variants.size(); ++v) {
+                RenderRequest timed = variants[v].second;
+                timed.reuseSceneData = false;  // its own voxels or BVH count in its cold time
+                const RenderResult r = session.render(timed);
+                totals[v].push_back(r.totalMs);
+                frames[v].push_back(r.frameMs);
+                for (const PassTiming& t : r.passes) passTimes[v][t.name].push_back(t.wallMs);
+            }
+        }
+        for (size_t v = 0; v < variants.size(); ++v) {
+            Point& p = points[v];
+            p.frameMs = medianOf(frames[v]);
+            p.timeMs = medianOf(totals[v]);
+            for (const auto& [name, t] : passTimes[v]) {
                 char buf[64];
                 std::snprintf(buf, sizeof buf, "%s%s %.1f", p.passes.empty() ? "" : ", ", name.c_str(), medianOf(t));
                 p.passes += buf;
             }
-            points.push_back(p);
         }
         markFront(points, [](const Point& p) { return p.frameMs; }, &Point::frontFrame);
         markFront(points, [](const Point& p) { return p.timeMs; }, &Point::frontTime);

@@ -12,16 +12,55 @@ layout(std430, binding = SCENE_BINDING_LIGHTS) readonly buffer SceneLights { Gpu
 layout(std430, binding = SCENE_BINDING_TRINORMAL) readonly buffer SceneTriNormal { vec4 sceneTriNormal[]; };
 layout(binding = SCENE_UNIT_TEXTURES) uniform sampler2DArray sceneTextures;
 
+// One texture coordinate under wrap mode `mode` (TEXTURE_WRAP_*, not repeat) for the array's
+// REPEAT sampler: clamp-to-edge and mirrored repeat fold it into [0, 1] and hold it half a
+// texel of the sampled level inside, so the filter does not reach across to the opposite
+// edge (texture_sampler.cpp is the CPU's side of this).
+float scene_wrapCoordinate(float c, int mode, float halfTexel) {
+    if (mode == TEXTURE_WRAP_REPEAT) return c;
+    if (mode == TEXTURE_WRAP_MIRRORED_REPEAT) {
+        float m = c - 2.0 * floor(0.5 * c);  // [0, 2): forwards, then backwards
+        c = m <= 1.0 ? m : 2.0 - m;
+    }
+    return clamp(c, halfTexel, 1.0 - halfTexel);
+}
+
+#ifdef SCENE_FRAGMENT_STAGE
+// The screen derivatives of the texture coordinates, which the fragment stage sets at the top
+// of main, in uniform control flow: taken after a branch (the wrap modes' below), they were
+// wrong where a 2 x 2 pixel quad straddles two triangles (llvmpipe; the TextureWrap test).
+vec2 scene_uvDx = vec2(0.0), scene_uvDy = vec2(0.0);
+#endif
+
+// Layer `layer` at uv with the wrap modes at `shift` (MATERIAL_*_WRAP_SHIFT) of a material's
+// flags. `lod` < 0: the level the hardware picks, which only a fragment stage has
+// (SCENE_FRAGMENT_STAGE). Repeat on both axes is the sampler's own and samples as it always did.
+vec4 scene_sampleLayer(int layer, vec2 uv, int flags, int shift, float lod) {
+    int modes = (flags >> shift) & 15;
+#ifdef SCENE_FRAGMENT_STAGE
+    if (modes == 0) return lod < 0.0 ? texture(sceneTextures, vec3(uv, float(layer)))
+                                     : textureLod(sceneTextures, vec3(uv, float(layer)), lod);
+    // The level of the unwrapped coordinates' footprint: a fold's derivatives would change it.
+    if (lod < 0.0) {
+        vec2 dx = scene_uvDx * float(SCENE_TEXTURE_SIZE), dy = scene_uvDy * float(SCENE_TEXTURE_SIZE);
+        lod = max(0.0, 0.5 * log2(max(max(dot(dx, dx), dot(dy, dy)), 1e-30)));
+    }
+#else
+    if (modes == 0) return textureLod(sceneTextures, vec3(uv, float(layer)), lod);
+#endif
+    // Trilinear filtering reads the level above lod too: half of that level's texel.
+    float halfTexel = 0.5 * exp2(ceil(max(lod, 0.0))) / float(SCENE_TEXTURE_SIZE);
+    vec2 wrapped = vec2(scene_wrapCoordinate(uv.x, modes & 3, halfTexel), scene_wrapCoordinate(uv.y, modes >> 2, halfTexel));
+    return textureLod(sceneTextures, vec3(wrapped, float(layer)), lod);
+}
+
 // Linear RGBA base colour (the array is sRGB, so sampling decodes). `lod` < 0 lets the
 // hardware pick the mip level (fragment shaders); compute shaders pass an explicit level.
 vec4 scene_baseColor(uint materialId, vec2 uv, float lod) {
     GpuMaterial m = sceneMaterials[materialId];
     vec4 c = m.baseColor;
 #ifndef SCENE_NO_TEXTURES
-    if (m.baseColorLayer >= 0) {
-        vec3 tc = vec3(uv, float(m.baseColorLayer));
-        c *= lod < 0.0 ? texture(sceneTextures, tc) : textureLod(sceneTextures, tc, lod);
-    }
+    if (m.baseColorLayer >= 0) c *= scene_sampleLayer(m.baseColorLayer, uv, m.flags, MATERIAL_BASE_WRAP_SHIFT, lod);
 #endif
     return c;
 }
@@ -30,10 +69,8 @@ vec3 scene_emission(uint materialId, vec2 uv, float lod) {
     GpuMaterial m = sceneMaterials[materialId];
     vec3 e = m.emissive.rgb;
 #ifndef SCENE_NO_TEXTURES
-    if (m.emissiveLayer >= 0 && any(greaterThan(e, vec3(0.0)))) {
-        vec3 tc = vec3(uv, float(m.emissiveLayer));
-        e *= (lod < 0.0 ? texture(sceneTextures, tc) : textureLod(sceneTextures, tc, lod)).rgb;
-    }
+    if (m.emissiveLayer >= 0 && any(greaterThan(e, vec3(0.0))))
+        e *= scene_sampleLayer(m.emissiveLayer, uv, m.flags, MATERIAL_EMISSIVE_WRAP_SHIFT, lod).rgb;
 #endif
     return e;
 }

@@ -21,10 +21,18 @@ struct GpuVertex {
     vec4 position;  // xyz world, w = 1
     vec4 normal;    // xyz world unit normal, w = 0
     vec4 uv;        // xy texcoord 0
+    vec4 color;     // linear RGBA vertex colour (glTF COLOR_0), (1, 1, 1, 1) without one
 };
 
 VCT_CONST int MATERIAL_DOUBLE_SIDED = 1;
 VCT_CONST int MATERIAL_ALPHA_MASK = 2;
+// The wrap modes of a material's textures, two bits an axis in GpuMaterial::flags from these
+// shifts (S, then T two bits up): the texture array has one sampler, REPEAT, for every layer.
+VCT_CONST int MATERIAL_BASE_WRAP_SHIFT = 2;
+VCT_CONST int MATERIAL_EMISSIVE_WRAP_SHIFT = 6;
+VCT_CONST int TEXTURE_WRAP_REPEAT = 0;  // TextureWrap's order (scene/scene.h)
+VCT_CONST int TEXTURE_WRAP_CLAMP_TO_EDGE = 1;
+VCT_CONST int TEXTURE_WRAP_MIRRORED_REPEAT = 2;
 
 struct GpuMaterial {
     vec4 baseColor;       // linear RGBA factor

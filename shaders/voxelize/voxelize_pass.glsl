@@ -43,6 +43,7 @@ struct Tri {
     vec3 p[3];      // voxel coordinates
     vec3 n[3];      // vertex normals (world = voxel orientation; unit)
     vec2 uv[3];
+    vec4 color[3];  // vertex colours (GpuVertex::color)
     vec3 faceN;     // cross(p1 - p0, p2 - p0), voxel units
     uint material;
     ivec3 lo, hi;   // clamped voxel bounding box
@@ -58,6 +59,7 @@ Tri vox_loadTriangle(uint t) {
         tri.p[k] = (v.position.xyz - uGridOrigin) * uInvVoxelSize;
         tri.n[k] = v.normal.xyz;
         tri.uv[k] = v.uv.xy;
+        tri.color[k] = v.color;
     }
     tri.material = sceneTriMaterial[t];
     tri.faceN = cross(tri.p[1] - tri.p[0], tri.p[2] - tri.p[0]);
@@ -145,7 +147,12 @@ void vox_add64(int channel, ivec3 v, float x) {
 void vox_accumulate(Tri tri, ivec3 v) {
     vec3 b = vox_barycentrics(tri, vec3(v) + 0.5);
     vec2 uv = b.x * tri.uv[0] + b.y * tri.uv[1] + b.z * tri.uv[2];
-    vec4 base = scene_baseColor(tri.material, uv, tri.lod);
+    // A triangle of one colour keeps it exactly (vertexColorAt in texture_sampler.cpp: the
+    // sparse voxelizer's rule), so a scene without vertex colours voxelizes as it always did.
+    vec4 color = tri.color[0] == tri.color[1] && tri.color[1] == tri.color[2]
+                     ? tri.color[0]
+                     : b.x * tri.color[0] + b.y * tri.color[1] + b.z * tri.color[2];
+    vec4 base = scene_baseColor(tri.material, uv, tri.lod) * color;
     GpuMaterial m = sceneMaterials[tri.material];
     if ((m.flags & MATERIAL_ALPHA_MASK) != 0 && base.a < m.alphaCutoff) return;
     uint w = tri.weight;

@@ -46,6 +46,12 @@ void validateScene(const Scene& scene) {
         if (!finite3(scene.normals[i]))
             throw std::runtime_error(where + ": vertex " + std::to_string(i) + " normal is not finite " +
                                      str3(scene.normals[i]));
+    if (!scene.colors.empty() && scene.colors.size() != scene.positions.size())
+        throw std::runtime_error(where + ": " + std::to_string(scene.colors.size()) + " vertex colours for " +
+                                 std::to_string(scene.positions.size()) + " vertices");
+    for (size_t i = 0; i < scene.colors.size(); ++i)
+        if (!finite3(glm::vec3(scene.colors[i])) || !std::isfinite(scene.colors[i].a))
+            throw std::runtime_error(where + ": vertex " + std::to_string(i) + " colour is not finite");
     for (size_t t = 0; t < scene.triangles.size(); ++t)
         for (int k = 0; k < 3; ++k)
             if (scene.triangles[t][k] >= scene.positions.size())
@@ -64,6 +70,17 @@ void validateScene(const Scene& scene) {
             throw std::runtime_error(where + ": light " + std::to_string(l) + " '" + light.name +
                                      "': colour, position or direction is not finite");
     }
+}
+
+// GpuMaterial::flags bits of texture `texture`'s wrap modes (none for no texture).
+int wrapFlags(const Scene& scene, int texture, int shift) {
+    if (texture < 0 || size_t(texture) >= scene.textures.size()) return 0;
+    static_assert(int(TextureWrap::Repeat) == gpu::TEXTURE_WRAP_REPEAT &&
+                      int(TextureWrap::ClampToEdge) == gpu::TEXTURE_WRAP_CLAMP_TO_EDGE &&
+                      int(TextureWrap::MirroredRepeat) == gpu::TEXTURE_WRAP_MIRRORED_REPEAT,
+                  "TextureWrap and the shaders' wrap modes share their numbering");
+    const Texture& t = scene.textures[size_t(texture)];
+    return (int(t.wrapS) << shift) | (int(t.wrapT) << (shift + 2));
 }
 
 }  // namespace
@@ -114,6 +131,7 @@ GpuScene uploadScene(const Scene& scene) {
     g.bounds = scene.bounds;
     g.hasTextures = !scene.textures.empty();
     for (const Material& m : scene.materials) g.hasAlphaMask |= m.alphaMask;
+    g.hasVertexColors = !scene.colors.empty();
 
     // Shaders read the scene's arrays as shader storage blocks, each within the device's
     // block size (GL guarantees 128 MiB: 2.8 million vertices, 11 million triangles).
@@ -132,6 +150,7 @@ GpuScene uploadScene(const Scene& scene) {
         vertices[i].position = glm::vec4(scene.positions[i], 1.f);
         vertices[i].normal = glm::vec4(i < scene.normals.size() ? scene.normals[i] : glm::vec3(0, 1, 0), 0.f);
         vertices[i].uv = glm::vec4(i < scene.uvs.size() ? scene.uvs[i] : glm::vec2(0.f), 0.f, 0.f);
+        vertices[i].color = g.hasVertexColors ? scene.colors[i] : glm::vec4(1.f);
     }
     g.vertices = createBuffer(vertices.size() * sizeof(gpu::GpuVertex), vertices.data());
     g.indices = createBuffer(scene.triangles.size() * sizeof(glm::uvec3), scene.triangles.data());
@@ -150,7 +169,9 @@ GpuScene uploadScene(const Scene& scene) {
         gm.emissive = glm::vec4(m.emissiveFactor, 0.f);
         gm.baseColorLayer = m.baseColorTexture;
         gm.emissiveLayer = m.emissiveTexture;
-        gm.flags = (m.doubleSided ? gpu::MATERIAL_DOUBLE_SIDED : 0) | (m.alphaMask ? gpu::MATERIAL_ALPHA_MASK : 0);
+        gm.flags = (m.doubleSided ? gpu::MATERIAL_DOUBLE_SIDED : 0) | (m.alphaMask ? gpu::MATERIAL_ALPHA_MASK : 0) |
+                   wrapFlags(scene, m.baseColorTexture, gpu::MATERIAL_BASE_WRAP_SHIFT) |
+                   wrapFlags(scene, m.emissiveTexture, gpu::MATERIAL_EMISSIVE_WRAP_SHIFT);
         gm.alphaCutoff = m.alphaCutoff;
         materials.push_back(gm);
     }
@@ -189,9 +210,9 @@ GpuScene uploadScene(const Scene& scene) {
     GLuint vao = g.vao.id();
     glVertexArrayVertexBuffer(vao, 0, g.vertices.id(), 0, sizeof(gpu::GpuVertex));
     glVertexArrayElementBuffer(vao, g.indices.id());
-    const GLuint offsets[3] = {offsetof(gpu::GpuVertex, position), offsetof(gpu::GpuVertex, normal),
-                               offsetof(gpu::GpuVertex, uv)};
-    for (GLuint a = 0; a < 3; ++a) {
+    const GLuint offsets[4] = {offsetof(gpu::GpuVertex, position), offsetof(gpu::GpuVertex, normal),
+                               offsetof(gpu::GpuVertex, uv), offsetof(gpu::GpuVertex, color)};
+    for (GLuint a = 0; a < 4; ++a) {
         glEnableVertexArrayAttrib(vao, a);
         glVertexArrayAttribFormat(vao, a, 4, GL_FLOAT, GL_FALSE, offsets[a]);
         glVertexArrayAttribBinding(vao, a, 0);

@@ -16,13 +16,14 @@ struct GpuScene {
     GlBuffer materials;         // GpuMaterial[]
     GlBuffer lights;            // GpuLight[] (shadow fields filled by the shadow pass)
     GlTexture textures;         // GL_TEXTURE_2D_ARRAY, SCENE_TEXTURE_SIZE^2, at least one layer
-    GlVertexArray vao;          // positions at attribute 0, normals 1, uvs 2
+    GlVertexArray vao;          // positions at attribute 0, normals 1, uvs 2, vertex colours 3
     int vertexCount = 0;
     int triangleCount = 0;
     int materialCount = 0;
     int lightCount = 0;
     bool hasTextures = false;   // any texture referenced: else shaders compile without sampling
     bool hasAlphaMask = false;  // any alpha-masked material: else no alpha test
+    bool hasVertexColors = false;  // Scene::colors given: else the G-buffer reads none
     Bounds3 bounds;
 };
 

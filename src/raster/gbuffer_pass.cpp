@@ -11,7 +11,8 @@ namespace vct {
 GBuffer renderGBuffer(const GpuScene& scene, const View& view, PassTimer& timer, bool materials) {
     auto scope = timer.scope("gbuffer");
     // One program per shader variant: features the scene does not use are compiled out.
-    const GLuint program = cachedProgram(gbufferProgramKey(scene.hasTextures, scene.hasAlphaMask, materials));
+    const GLuint program =
+        cachedProgram(gbufferProgramKey(scene.hasTextures, scene.hasAlphaMask, materials, scene.hasVertexColors));
 
     GBuffer g;
     g.width = view.width;

@@ -2,8 +2,9 @@
 
 namespace vct {
 
-ProgramKey gbufferProgramKey(bool textures, bool alphaMask, bool materials) {
+ProgramKey gbufferProgramKey(bool textures, bool alphaMask, bool materials, bool vertexColors) {
     ShaderDefines d;
+    if (!vertexColors) d.push_back({"SCENE_NO_VERTEX_COLORS", "1"});
     if (!materials) d.push_back({"GBUFFER_SURFACE_ONLY", "1"});
     if (!textures) d.push_back({"SCENE_NO_TEXTURES", "1"});
     if (!alphaMask) d.push_back({"SCENE_NO_ALPHA_MASK", "1"});
@@ -18,7 +19,8 @@ std::vector<ProgramKey> rasterProgramVariants() {
     std::vector<ProgramKey> v;
     for (bool textures : {false, true})
         for (bool alpha : {false, true})
-            for (bool materials : {false, true}) v.push_back(gbufferProgramKey(textures, alpha, materials));
+            for (bool materials : {false, true})
+                for (bool colors : {false, true}) v.push_back(gbufferProgramKey(textures, alpha, materials, colors));
     v.push_back(shadowProgramKey());
     v.push_back(directLightProgramKey());
     v.push_back(compositeProgramKey());

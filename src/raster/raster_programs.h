@@ -8,9 +8,9 @@
 
 namespace vct {
 
-// The G-buffer: texture sampling and the alpha test compiled out where the scene has none,
-// albedo and emission where the render reads no material (GBuffer::materials).
-ProgramKey gbufferProgramKey(bool textures, bool alphaMask, bool materials);
+// The G-buffer: texture sampling, the alpha test and vertex colours compiled out where the
+// scene has none, albedo and emission where the render reads no material (GBuffer::materials).
+ProgramKey gbufferProgramKey(bool textures, bool alphaMask, bool materials, bool vertexColors);
 ProgramKey shadowProgramKey();
 ProgramKey directLightProgramKey();
 ProgramKey compositeProgramKey();

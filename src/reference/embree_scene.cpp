@@ -36,8 +36,10 @@ void alphaMaskFilter(const RTCFilterFunctionNArguments* args) {
         uint32_t tri = RTCHitN_primID(args->hit, args->N, i);
         uint32_t mat = materialOf(scene, tri);
         if (mat >= scene.materials.size() || !scene.materials[mat].alphaMask) continue;
-        glm::vec2 uv = uvAt(scene, tri, RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
-        if (materialAlpha(scene, mat, uv) < scene.materials[mat].alphaCutoff) args->valid[i] = 0;
+        const float u = RTCHitN_u(args->hit, args->N, i), v = RTCHitN_v(args->hit, args->N, i);
+        const glm::vec4 color = vertexColorAt(scene, tri, glm::vec3(1.f - u - v, u, v));
+        if (materialAlpha(scene, mat, uvAt(scene, tri, u, v), color) < scene.materials[mat].alphaCutoff)
+            args->valid[i] = 0;
     }
 }
 
@@ -160,6 +162,7 @@ SurfaceHit EmbreeScene::surfaceAt(uint32_t triangle, float u, float v, const glm
     }
     h.shadingNormal = ns;
     h.uv = uvAt(s, triangle, u, v);
+    h.color = vertexColorAt(s, triangle, glm::vec3(w, u, v));
     return h;
 }
 

@@ -20,13 +20,14 @@ namespace vct {
 
 // A surface hit rebuilt from Embree's (primID, u, v): position from the barycentrics
 // (pbrt's choice: its error is bounded by the vertex magnitudes, not by t), normals faced
-// toward the incoming direction, texture coordinates interpolated.
+// toward the incoming direction, texture coordinates and vertex colours interpolated.
 struct SurfaceHit {
     glm::vec3 position{0.f};
     glm::vec3 geomNormal{0.f, 0.f, 1.f};     // unit, faces the side the ray came from
     bool frontFacing = true;                 // the ray came from the side of the winding normal
     glm::vec3 shadingNormal{0.f, 0.f, 1.f};  // unit, interpolated, on geomNormal's side
     glm::vec2 uv{0.f};
+    glm::vec4 color{1.f};  // the vertex colour (Scene::colors) at the hit
     uint32_t triangle = 0;
     float errorScale = 0.f;  // max |coordinate| of the triangle's vertices and the point
 };

@@ -145,7 +145,7 @@ struct PathTracer {
             // light from emissive surfaces is indirect even after one reflection, as in every
             // renderer method (the raster direct pass sees punctual lights only).
             glm::vec3& target = bounce == 0 ? out.direct : out.indirect;
-            const glm::vec3 albedo = materialAlbedo(s, materialOf(s, h.triangle), h.uv);
+            const glm::vec3 albedo = materialAlbedo(s, materialOf(s, h.triangle), h.uv, h.color);
             if (maxComponent(albedo) <= 0.f) break;
             const glm::vec3 origin = offsetRayOrigin(h.position, h.geomNormal, h.errorScale);
             const glm::vec3 f = albedo * kInvPi;

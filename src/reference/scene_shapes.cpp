@@ -12,6 +12,7 @@ uint32_t addVertex(Scene& scene, glm::vec3 p, glm::vec3 n, glm::vec2 uv) {
     scene.positions.push_back(p);
     scene.normals.push_back(n);
     scene.uvs.push_back(uv);
+    if (!scene.colors.empty()) scene.colors.push_back(glm::vec4(1.f));  // kept parallel to positions
     scene.bounds.expand(p);
     return uint32_t(scene.positions.size() - 1);
 }

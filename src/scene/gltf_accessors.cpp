@@ -157,4 +157,28 @@ std::vector<glm::vec3> readVec3(const LoadContext& load, int accessor, const std
     return out;
 }
 
+std::vector<glm::vec4> readColors(const LoadContext& load, int accessor, const std::string& ctx) {
+    const tinygltf::Model& model = load.model;
+    if (accessor < 0 || accessor >= int(model.accessors.size()))
+        load.fail(ctx + ": " + outOfRange("accessor", accessor, model.accessors.size()));
+    const tinygltf::Accessor& acc = model.accessors[size_t(accessor)];
+    const std::string where = accessorLabel(accessor, ctx);
+    const int components = acc.type == TINYGLTF_TYPE_VEC3 ? 3 : acc.type == TINYGLTF_TYPE_VEC4 ? 4 : 0;
+    if (components == 0) load.fail(where + ": a vertex colour must be VEC3 or VEC4");
+    const bool normalizedInteger = acc.normalized && (acc.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                                      acc.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+    if (acc.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !normalizedInteger)
+        load.fail(where + ": a vertex colour must be float, or normalized unsigned byte or short (component type " +
+                  std::to_string(acc.componentType) + (acc.normalized ? ", normalized" : "") + ")");
+    size_t count = 0;
+    const std::vector<double> v = readAccessor(load, accessor, ctx, components, &count);
+    std::vector<glm::vec4> out(count, glm::vec4(1.f));
+    for (size_t i = 0; i < count; ++i) {
+        for (int c = 0; c < components; ++c) out[i][c] = float(v[i * size_t(components) + size_t(c)]);
+        if (!finite3(glm::vec3(out[i])) || !std::isfinite(out[i].a))
+            load.fail(where + ": element " + std::to_string(i) + " is not finite");
+    }
+    return out;
+}
+
 }  // namespace vct::gltf_detail

@@ -40,7 +40,7 @@ struct LoadContext {
     std::string path;
     Scene scene;
     std::vector<int> sceneTextureFromGltf;                             // -1 = not converted yet
-    std::map<std::tuple<int, bool, bool>, int> sceneTextureFromImage;  // (image, repeatS, repeatT) -> texture
+    std::map<std::tuple<int, int, int>, int> sceneTextureFromImage;  // (image, wrapS, wrapT) -> texture
     int defaultMaterial = -1;
     size_t degenerateCount = 0;
     size_t repairedNormalCount = 0;
@@ -95,6 +95,9 @@ std::vector<double> readAccessor(const LoadContext& load, int index, const std::
                                  size_t* countOut, int* componentTypeOut = nullptr);
 // Reads a VEC3 attribute and rejects NaN or infinite elements.
 std::vector<glm::vec3> readVec3(const LoadContext& load, int accessor, const std::string& ctx);
+// Reads a COLOR_n attribute as linear RGBA (VEC3: alpha 1) of floats or of normalized
+// unsigned bytes or shorts, the types glTF allows, and rejects non-finite elements.
+std::vector<glm::vec4> readColors(const LoadContext& load, int accessor, const std::string& ctx);
 
 // Extensions (gltf_extensions.cpp). Refuses a model that requires an extension the loader
 // does not implement; warns of those it uses and the loader leaves out.

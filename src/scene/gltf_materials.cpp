@@ -47,6 +47,18 @@ std::vector<uint8_t> rgba8FromImage(const tinygltf::Image& image) {
     return rgba;
 }
 
+// A sampler's wrapS or wrapT: GL's enum, the three glTF allows.
+TextureWrap textureWrap(const LoadContext& load, int mode, const std::string& where) {
+    switch (mode) {
+    case TINYGLTF_TEXTURE_WRAP_REPEAT: return TextureWrap::Repeat;
+    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return TextureWrap::ClampToEdge;
+    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return TextureWrap::MirroredRepeat;
+    default: break;
+    }
+    load.fail(where + ": " + std::to_string(mode) +
+              " is not a wrap mode (10497 REPEAT, 33071 CLAMP_TO_EDGE, 33648 MIRRORED_REPEAT)");
+}
+
 // The scene texture of glTF texture `gltfTexture`, converting it on first use.
 int textureFor(LoadContext& load, int gltfTexture, const std::string& ctx) {
     const tinygltf::Model& model = load.model;
@@ -58,17 +70,17 @@ int textureFor(LoadContext& load, int gltfTexture, const std::string& ctx) {
 
     const tinygltf::Texture& tex = model.textures[size_t(gltfTexture)];
     const std::string where = label("texture", gltfTexture, tex.name);
-    bool repeatS = true, repeatT = true;
+    TextureWrap wrapS = TextureWrap::Repeat, wrapT = TextureWrap::Repeat;
     if (tex.sampler >= 0) {
         if (tex.sampler >= int(model.samplers.size()))
             load.fail(where + ": " + outOfRange("sampler", tex.sampler, model.samplers.size()));
         const tinygltf::Sampler& s = model.samplers[size_t(tex.sampler)];
-        // MIRRORED_REPEAT is read as REPEAT: the Texture struct has no mirror mode.
-        repeatS = s.wrapS != TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
-        repeatT = s.wrapT != TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+        const std::string samplerWhere = label("sampler", tex.sampler, s.name);
+        wrapS = textureWrap(load, s.wrapS, samplerWhere + " wrapS");
+        wrapT = textureWrap(load, s.wrapT, samplerWhere + " wrapT");
     }
     // Many glTF textures often share one image (Lost Empire: 45 textures, one atlas): convert it once.
-    const auto shared = load.sceneTextureFromImage.find({tex.source, repeatS, repeatT});
+    const auto shared = load.sceneTextureFromImage.find({tex.source, int(wrapS), int(wrapT)});
     if (shared != load.sceneTextureFromImage.end()) return mapped = shared->second;
     const int imageCount = int(model.images.size());
     if (tex.source < 0 || tex.source >= imageCount)
@@ -86,10 +98,10 @@ int textureFor(LoadContext& load, int gltfTexture, const std::string& ctx) {
     out.width = image.width;
     out.height = image.height;
     out.rgba = rgba8FromImage(image);
-    out.repeatS = repeatS;
-    out.repeatT = repeatT;
+    out.wrapS = wrapS;
+    out.wrapT = wrapT;
     mapped = int(load.scene.textures.size());
-    load.sceneTextureFromImage[{tex.source, repeatS, repeatT}] = mapped;
+    load.sceneTextureFromImage[{tex.source, int(wrapS), int(wrapT)}] = mapped;
     load.scene.textures.push_back(std::move(out));
     return mapped;
 }

@@ -130,6 +130,12 @@ void addPrimitive(LoadContext& load, int meshIndex, int primIndex, const glm::ma
             uvs[i] = glm::vec2(mapping.transform * glm::vec3(uv, 1.f));
         }
     }
+    // Vertex colours multiply the base colour and its alpha; only set 0 is read.
+    std::vector<glm::vec4> colors;
+    if (attr("COLOR_0") >= 0) {
+        colors = readColors(load, attr("COLOR_0"), ctx + ", COLOR_0");
+        checkCount("COLOR_0", colors.size());
+    }
     const std::vector<glm::uvec3> tris = primitiveTriangles(load, prim, positions.size(), ctx);
 
     const glm::mat3 linear(worldFromLocal);
@@ -142,6 +148,13 @@ void addPrimitive(LoadContext& load, int meshIndex, int primIndex, const glm::ma
             load.fail(ctx + ": vertex " + std::to_string(i) + " is not finite in world space " + str3(world[i]));
     }
     Scene& scene = load.scene;
+    // Scene::colors stays empty until a primitive brings colours; from then on it holds one
+    // per vertex, white for the primitives without.
+    const bool keepsColors = !colors.empty() || !scene.colors.empty();
+    if (keepsColors) scene.colors.resize(scene.positions.size(), glm::vec4(1.f));
+    auto pushColor = [&](size_t vertex) {
+        if (keepsColors) scene.colors.push_back(colors.empty() ? glm::vec4(1.f) : colors[vertex]);
+    };
     auto emitTriangle = [&](const glm::uvec3& t) {
         scene.triangles.push_back(t);
         scene.triangleMaterial.push_back(material);
@@ -159,6 +172,7 @@ void addPrimitive(LoadContext& load, int meshIndex, int primIndex, const glm::ma
                 scene.positions.push_back(world[t[int(k)]]);
                 scene.normals.push_back(n);
                 scene.uvs.push_back(uvs[t[int(k)]]);
+                pushColor(t[int(k)]);
             }
             emitTriangle(glm::uvec3(base, base + 1, base + 2));
         }
@@ -179,6 +193,7 @@ void addPrimitive(LoadContext& load, int meshIndex, int primIndex, const glm::ma
         scene.positions.push_back(world[i]);
         scene.normals.push_back(n);
         scene.uvs.push_back(uvs[i]);
+        pushColor(i);
     }
     bool anyRepair = false;
     for (const glm::uvec3& t : kept) {

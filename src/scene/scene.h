@@ -29,6 +29,10 @@ struct Bounds3 {
     float maxExtent() const { glm::vec3 e = extent(); return glm::max(e.x, glm::max(e.y, e.z)); }
 };
 
+// A glTF sampler's wrap mode along one texture axis (GL's REPEAT, CLAMP_TO_EDGE and
+// MIRRORED_REPEAT).
+enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
+
 // 8-bit RGBA texel data as stored in the file (base colour and emissive textures are
 // sRGB-encoded per glTF; decoding to linear happens where they are sampled).
 struct Texture {
@@ -36,8 +40,8 @@ struct Texture {
     int width = 0;
     int height = 0;
     std::vector<uint8_t> rgba;  // width * height * 4, row 0 at the top (glTF uv origin)
-    bool repeatS = true;        // wrap modes: repeat, or clamp-to-edge otherwise
-    bool repeatT = true;
+    TextureWrap wrapS = TextureWrap::Repeat;
+    TextureWrap wrapT = TextureWrap::Repeat;
 };
 
 // Lambertian material: glTF pbrMetallicRoughness base colour + emission; metal/roughness
@@ -144,6 +148,9 @@ struct Scene {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
     std::vector<glm::vec2> uvs;          // texcoord 0; (0,0) when absent
+    // Vertex colours (glTF COLOR_0): linear RGBA multiplying the base colour and its alpha.
+    // Empty when no primitive has one (every vertex (1, 1, 1, 1)); else one per position.
+    std::vector<glm::vec4> colors;
     std::vector<glm::uvec3> triangles;   // indices into the vertex arrays
     std::vector<uint32_t> triangleMaterial;  // per triangle, index into materials
     std::vector<uint8_t> triangleOffscreen;  // per triangle: 1 if from a node marked off-screen occluder

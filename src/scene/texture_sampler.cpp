@@ -19,19 +19,36 @@ const std::array<float, 256>& srgbTable() {
     return table;
 }
 
-// Integer texel coordinate of a (possibly negative or out-of-range) index.
-int wrapIndex(int i, int size, bool repeat) {
-    if (repeat) {
+// Integer texel coordinate of a (possibly negative or out-of-range) index. Mirrored repeat
+// has period 2 size, the second half backwards, so the edge texel neighbours itself.
+int wrapIndex(int i, int size, TextureWrap wrap) {
+    switch (wrap) {
+    case TextureWrap::Repeat:
         i %= size;
         return i < 0 ? i + size : i;
+    case TextureWrap::MirroredRepeat: {
+        const int period = 2 * size;
+        i %= period;
+        if (i < 0) i += period;
+        return i < size ? i : period - 1 - i;
+    }
+    case TextureWrap::ClampToEdge: break;
     }
     return i < 0 ? 0 : (i >= size ? size - 1 : i);
 }
 
 // Keeps the texel arithmetic in int range for any finite or non-finite uv.
-float reduceCoordinate(float c, bool repeat) {
+float reduceCoordinate(float c, TextureWrap wrap) {
     if (!std::isfinite(c)) return 0.f;
-    return repeat ? c - std::floor(c) : std::min(std::max(c, 0.f), 1.f);
+    switch (wrap) {
+    case TextureWrap::Repeat: return c - std::floor(c);
+    case TextureWrap::MirroredRepeat: {
+        const float m = c - 2.f * std::floor(0.5f * c);  // [0, 2): forwards, then backwards
+        return m <= 1.f ? m : 2.f - m;
+    }
+    case TextureWrap::ClampToEdge: break;
+    }
+    return std::min(std::max(c, 0.f), 1.f);
 }
 
 glm::vec4 texel(const Texture& t, int x, int y, bool srgb) {
@@ -51,34 +68,45 @@ glm::vec4 sampleTexture(const Texture& texture, glm::vec2 uv, bool srgb) {
     if (texture.width <= 0 || texture.height <= 0 ||
         texture.rgba.size() < size_t(texture.width) * size_t(texture.height) * 4)
         return glm::vec4(1.f);
-    float s = reduceCoordinate(uv.x, texture.repeatS) * float(texture.width) - 0.5f;
-    float t = reduceCoordinate(uv.y, texture.repeatT) * float(texture.height) - 0.5f;
+    float s = reduceCoordinate(uv.x, texture.wrapS) * float(texture.width) - 0.5f;
+    float t = reduceCoordinate(uv.y, texture.wrapT) * float(texture.height) - 0.5f;
     float fs = std::floor(s), ft = std::floor(t);
     float ws = s - fs, wt = t - ft;
     int x0 = int(fs), y0 = int(ft);
-    int xa = wrapIndex(x0, texture.width, texture.repeatS), xb = wrapIndex(x0 + 1, texture.width, texture.repeatS);
-    int ya = wrapIndex(y0, texture.height, texture.repeatT), yb = wrapIndex(y0 + 1, texture.height, texture.repeatT);
+    int xa = wrapIndex(x0, texture.width, texture.wrapS), xb = wrapIndex(x0 + 1, texture.width, texture.wrapS);
+    int ya = wrapIndex(y0, texture.height, texture.wrapT), yb = wrapIndex(y0 + 1, texture.height, texture.wrapT);
     glm::vec4 top = glm::mix(texel(texture, xa, ya, srgb), texel(texture, xb, ya, srgb), ws);
     glm::vec4 bottom = glm::mix(texel(texture, xa, yb, srgb), texel(texture, xb, yb, srgb), ws);
     return glm::mix(top, bottom, wt);
 }
 
-glm::vec3 materialAlbedo(const Scene& scene, uint32_t material, glm::vec2 uv) {
+glm::vec4 vertexColorAt(const Scene& scene, uint32_t tri, glm::vec3 b) {
+    if (scene.colors.size() != scene.positions.size() || tri >= scene.triangles.size()) return glm::vec4(1.f);
+    const glm::uvec3& t = scene.triangles[tri];
+    const glm::vec4 c0 = scene.colors[t.x], c1 = scene.colors[t.y], c2 = scene.colors[t.z];
+    // A triangle of one colour keeps it exactly: weights summing to 1 within rounding would
+    // move it by an ulp, and the voxelizers' fixed-point sums with it.
+    if (c0 == c1 && c1 == c2) return c0;
+    return b.x * c0 + b.y * c1 + b.z * c2;
+}
+
+glm::vec3 materialAlbedo(const Scene& scene, uint32_t material, glm::vec2 uv, glm::vec4 vertexColor) {
     if (material >= scene.materials.size()) return glm::vec3(0.8f);  // loader default grey
     const Material& m = scene.materials[material];
     glm::vec3 albedo(m.baseColorFactor);
     if (m.baseColorTexture >= 0 && size_t(m.baseColorTexture) < scene.textures.size())
         albedo *= glm::vec3(sampleTexture(scene.textures[size_t(m.baseColorTexture)], uv, true));
+    albedo *= glm::vec3(vertexColor);
     return glm::clamp(albedo, 0.f, 1.f);
 }
 
-float materialAlpha(const Scene& scene, uint32_t material, glm::vec2 uv) {
+float materialAlpha(const Scene& scene, uint32_t material, glm::vec2 uv, glm::vec4 vertexColor) {
     if (material >= scene.materials.size()) return 1.f;
     const Material& m = scene.materials[material];
     float a = m.baseColorFactor.a;
     if (m.baseColorTexture >= 0 && size_t(m.baseColorTexture) < scene.textures.size())
         a *= sampleTexture(scene.textures[size_t(m.baseColorTexture)], uv, true).a;
-    return a;
+    return a * vertexColor.a;
 }
 
 glm::vec3 materialEmission(const Scene& scene, uint32_t material, glm::vec2 uv) {

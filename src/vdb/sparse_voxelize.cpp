@@ -64,6 +64,7 @@ struct Tri {
     glm::vec3 n[3];
     glm::vec2 uv[3];
     glm::vec3 faceN;
+    uint32_t index = 0;  // the triangle's index in the scene (its vertex colours)
     uint32_t material = 0;
     glm::ivec3 lo, hi;
     int axis = 2;
@@ -79,6 +80,7 @@ bool loadTriangle(const Scene& scene, size_t t, const glm::vec3& origin, float i
         tri.n[k] = idx[k] < scene.normals.size() ? scene.normals[idx[k]] : glm::vec3(0.f);
         tri.uv[k] = idx[k] < scene.uvs.size() ? scene.uvs[idx[k]] : glm::vec2(0.f);
     }
+    tri.index = uint32_t(t);
     tri.material = t < scene.triangleMaterial.size() ? scene.triangleMaterial[t] : 0u;
     tri.faceN = glm::cross(tri.p[1] - tri.p[0], tri.p[2] - tri.p[0]);
     const glm::vec3 bmin = glm::min(tri.p[0], glm::min(tri.p[1], tri.p[2]));
@@ -109,9 +111,10 @@ void accumulate(const Scene& scene, const Tri& tri, const glm::ivec3& v, ThreadS
                 openvdb::tree::ValueAccessor<openvdb::Int32Tree>& acc) {
     const glm::vec3 b = barycentrics(tri, glm::vec3(v) + 0.5f);
     const glm::vec2 uv = b.x * tri.uv[0] + b.y * tri.uv[1] + b.z * tri.uv[2];
+    const glm::vec4 color = vertexColorAt(scene, tri.index, b);
     if (tri.material < scene.materials.size()) {
         const Material& m = scene.materials[tri.material];
-        if (m.alphaMask && materialAlpha(scene, tri.material, uv) < m.alphaCutoff) return;
+        if (m.alphaMask && materialAlpha(scene, tri.material, uv, color) < m.alphaCutoff) return;
     }
     const openvdb::Coord ijk(v.x, v.y, v.z);
     if (!ts.attributes) {
@@ -119,7 +122,7 @@ void accumulate(const Scene& scene, const Tri& tri, const glm::ivec3& v, ThreadS
         return;
     }
     const glm::vec3 albedo =
-        tri.material < scene.materials.size() ? materialAlbedo(scene, tri.material, uv) : glm::vec3(1.f);
+        tri.material < scene.materials.size() ? materialAlbedo(scene, tri.material, uv, color) : glm::vec3(1.f);
     const glm::vec3 emission = tri.material < scene.materials.size()
                                    ? materialEmission(scene, tri.material, uv)
                                    : glm::vec3(0.f);

@@ -171,9 +171,16 @@ TEST(ReferenceGI, TextureSamplerDecodesThenFilters) {
     // Repeat wraps; clamp-to-edge holds the border texel.
     EXPECT_NEAR(sampleTexture(t, {1.25f, -0.75f}).x, srgbDecode(10), 1e-6);
     EXPECT_NEAR(sampleTexture(t, {0.f, 0.25f}).x, (srgbDecode(10) + srgbDecode(250)) / 2, 1e-6);  // wraps across
-    t.repeatS = false;
+    t.wrapS = TextureWrap::ClampToEdge;
     EXPECT_NEAR(sampleTexture(t, {0.f, 0.25f}).x, srgbDecode(10), 1e-6);
     EXPECT_NEAR(sampleTexture(t, {5.f, 0.25f}).x, srgbDecode(250), 1e-6);
+    // Mirrored repeat runs backwards every other period, and an edge texel neighbours itself.
+    t.wrapS = TextureWrap::MirroredRepeat;
+    EXPECT_NEAR(sampleTexture(t, {1.25f, 0.25f}).x, srgbDecode(250), 1e-6);
+    EXPECT_NEAR(sampleTexture(t, {-0.25f, 0.25f}).x, srgbDecode(10), 1e-6);
+    EXPECT_NEAR(sampleTexture(t, {2.25f, 0.25f}).x, srgbDecode(10), 1e-6);
+    EXPECT_NEAR(sampleTexture(t, {1.f, 0.25f}).x, srgbDecode(250), 1e-6);
+    EXPECT_NEAR(sampleTexture(t, {0.f, 0.25f}).x, srgbDecode(10), 1e-6);
     EXPECT_NEAR(srgbToLinear(255), 1.0, 1e-7);
     EXPECT_NEAR(srgbToLinear(0), 0.0, 1e-9);
 }

@@ -60,6 +60,12 @@ struct HandGltf {
     std::vector<float> normals;     // empty = no NORMAL
     std::vector<uint16_t> indices;  // empty = non-indexed
     std::vector<std::vector<float>> texcoords;  // TEXCOORD_0, TEXCOORD_1, ...: uv per vertex
+    // COLOR_0 when not empty: its raw bytes and its accessor's members besides bufferView and
+    // count (e.g. "componentType": 5121, "normalized": true, "type": "VEC4"); count: colorCount,
+    // or the vertex count when negative.
+    std::vector<unsigned char> colorBytes;
+    std::string colorAccessor;
+    int colorCount = -1;
     int mode = 4;
     int positionCountOverride = -1;
     std::string nodes = R"([{"mesh": 0, "name": "n"}])";
@@ -102,6 +108,16 @@ struct HandGltf {
             accessors << R"(,{"bufferView": )" << view
                       << R"(, "componentType": 5126, "type": "VEC2", "count": )" << texcoords[set].size() / 2 << "}";
             attributes << R"(, "TEXCOORD_)" << set << R"(": )" << accessor;
+            ++view;
+            ++accessor;
+        }
+        if (!colorBytes.empty()) {
+            at = buffer.size();
+            append(buffer, colorBytes);
+            addView(at, colorBytes.size(), false);
+            accessors << R"(,{"bufferView": )" << view << ", " << colorAccessor
+                      << R"(, "count": )" << (colorCount >= 0 ? colorCount : vertexCount) << "}";
+            attributes << R"(, "COLOR_0": )" << accessor;
             ++view;
             ++accessor;
         }
@@ -494,8 +510,8 @@ TEST_F(SceneLoader, MaterialFactorsEmissiveStrengthAndTexture) {
     const vct::Texture& t = s.textures[0];
     EXPECT_EQ(t.width, 2);
     EXPECT_EQ(t.height, 2);
-    EXPECT_FALSE(t.repeatS);
-    EXPECT_TRUE(t.repeatT);
+    EXPECT_EQ(t.wrapS, vct::TextureWrap::ClampToEdge);
+    EXPECT_EQ(t.wrapT, vct::TextureWrap::Repeat);
     ASSERT_EQ(t.rgba.size(), 16u);
     EXPECT_EQ(std::vector<uint8_t>(t.rgba.begin(), t.rgba.begin() + 4),
               (std::vector<uint8_t>{255, 0, 0, 255}));
@@ -630,6 +646,104 @@ TEST_F(SceneLoader, TexCoordPicksTheAttributeSet) {
     EXPECT_EQ(two.uvs[2], glm::vec2(0.5f, 0.6f));
     ASSERT_EQ(two.warnings.size(), 1u);
     EXPECT_CONTAINS(two.warnings[0], "material 0 'two': the emissive texture reads other texture coordinates");
+}
+
+TEST_F(SceneLoader, SamplerWrapModesAreReadAndUnknownOnesRefused) {
+    const unsigned char texel[3] = {200, 100, 50};
+    ASSERT_NE(stbi_write_png((dir / "t.png").string().c_str(), 1, 1, 3, texel, 3), 0);
+    HandGltf g;
+    g.positions = kTriangle;
+    g.materialField = ", \"material\": 0";
+    auto withSampler = [&](const std::string& sampler) {
+        g.extraTop = R"(, "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
+            "textures": [{"source": 0, "sampler": 0}], "images": [{"uri": "t.png"}], "samplers": [)" +
+                     sampler + "]";
+        return g.json();
+    };
+    const Scene s = vct::loadScene(write("mirror.gltf", withSampler(R"({"wrapS": 33648, "wrapT": 33071})")));
+    ASSERT_EQ(s.textures.size(), 1u);
+    EXPECT_EQ(s.textures[0].wrapS, vct::TextureWrap::MirroredRepeat);
+    EXPECT_EQ(s.textures[0].wrapT, vct::TextureWrap::ClampToEdge);
+    EXPECT_EQ(vct::loadScene(write("default.gltf", withSampler("{}"))).textures[0].wrapS, vct::TextureWrap::Repeat);
+    EXPECT_CONTAINS(loadError(write("bad.gltf", withSampler(R"({"name": "odd", "wrapT": 9729})"))),
+                    "sampler 0 'odd' wrapT: 9729 is not a wrap mode");
+}
+
+// Raw bytes of `values` (floats or unsigned integers) for HandGltf::colorBytes.
+template <typename T>
+std::vector<unsigned char> bytesOf(const std::vector<T>& values) {
+    std::vector<unsigned char> out(values.size() * sizeof(T));
+    std::memcpy(out.data(), values.data(), out.size());
+    return out;
+}
+
+TEST_F(SceneLoader, VertexColoursAreReadInEveryTypeGltfAllows) {
+    HandGltf g;
+    g.positions = kTriangle;
+    // VEC4 of normalized unsigned bytes: value / 255.
+    g.colorBytes = {255, 0, 51, 255, 0, 255, 0, 128, 102, 102, 102, 0};
+    g.colorAccessor = R"("componentType": 5121, "normalized": true, "type": "VEC4")";
+    Scene s = vct::loadScene(write("ubyte.gltf", g.json()));
+    ASSERT_EQ(s.colors.size(), 3u);
+    const glm::uvec3 t = s.triangles[0];
+    EXPECT_EQ(s.colors[t.x], glm::vec4(1.f, 0.f, 51.f / 255.f, 1.f));
+    EXPECT_EQ(s.colors[t.y], glm::vec4(0.f, 1.f, 0.f, 128.f / 255.f));
+    EXPECT_EQ(s.colors[t.z], glm::vec4(102.f / 255.f, 102.f / 255.f, 102.f / 255.f, 0.f));
+    // VEC3 of normalized unsigned shorts: value / 65535, alpha 1.
+    g.colorBytes = bytesOf(std::vector<uint16_t>{65535, 0, 13107, 0, 65535, 0, 32768, 32768, 32768});
+    g.colorAccessor = R"("componentType": 5123, "normalized": true, "type": "VEC3")";
+    s = vct::loadScene(write("ushort.gltf", g.json()));
+    ASSERT_EQ(s.colors.size(), 3u);
+    EXPECT_EQ(s.colors[s.triangles[0].x], glm::vec4(1.f, 0.f, 0.2f, 1.f));
+    EXPECT_FLOAT_EQ(s.colors[s.triangles[0].z].r, 32768.f / 65535.f);
+    // VEC3 of floats.
+    g.colorBytes = bytesOf(std::vector<float>{0.25f, 0.5f, 0.75f, 1, 1, 1, 0, 0, 0});
+    g.colorAccessor = R"("componentType": 5126, "type": "VEC3")";
+    s = vct::loadScene(write("float.gltf", g.json()));
+    EXPECT_EQ(s.colors[s.triangles[0].x], glm::vec4(0.25f, 0.5f, 0.75f, 1.f));
+    // Without COLOR_0 the scene has no colours (every vertex white).
+    g.colorBytes.clear();
+    EXPECT_TRUE(vct::loadScene(write("none.gltf", g.json())).colors.empty());
+}
+
+TEST_F(SceneLoader, APrimitiveWithoutColoursIsWhiteBesideOneWithThem) {
+    HandGltf g;
+    g.positions = kTriangle;
+    g.colorBytes = bytesOf(std::vector<float>{0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f});
+    g.colorAccessor = R"("componentType": 5126, "type": "VEC3")";
+    // Two meshes share nothing but their attributes' accessors: mesh 1 reads POSITION alone.
+    std::string json = g.json();
+    const std::string meshes = R"("meshes": [{"name": "tri", "primitives": [{"attributes": {"POSITION": 0, "COLOR_0": 1}, "mode": 4}]})";
+    ASSERT_NE(json.find(meshes), std::string::npos);
+    json.replace(json.find(meshes), meshes.size(),
+                 meshes + R"(, {"name": "plain", "primitives": [{"attributes": {"POSITION": 0}}]})");
+    const std::string nodes = R"([{"mesh": 0, "name": "n"}])";
+    json.replace(json.find(nodes), nodes.size(), R"([{"mesh": 1, "name": "plain"}, {"mesh": 0, "name": "n"}])");
+    json.replace(json.find(R"("nodes": [0])"), 12, R"("nodes": [0, 1])");
+    const Scene s = vct::loadScene(write("mixed.gltf", json));
+    ASSERT_EQ(s.triangles.size(), 2u);
+    ASSERT_EQ(s.colors.size(), s.positions.size());
+    EXPECT_EQ(s.colors[s.triangles[0].x], glm::vec4(1.f));  // the plain mesh came first
+    EXPECT_EQ(s.colors[s.triangles[1].x], glm::vec4(0.5f, 0.5f, 0.5f, 1.f));
+}
+
+TEST_F(SceneLoader, VertexColoursOfATypeGltfDoesNotAllowAreRefusedByName) {
+    HandGltf g;
+    g.positions = kTriangle;
+    g.colorBytes = bytesOf(std::vector<float>{1, 1, 1, 1, 1, 1});
+    g.colorAccessor = R"("componentType": 5126, "type": "VEC2")";
+    EXPECT_CONTAINS(loadError(write("vec2.gltf", g.json())), "COLOR_0): a vertex colour must be VEC3 or VEC4");
+    g.colorBytes = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255};
+    g.colorAccessor = R"("componentType": 5121, "type": "VEC4")";
+    EXPECT_CONTAINS(loadError(write("unnormalized.gltf", g.json())),
+                    "a vertex colour must be float, or normalized unsigned byte or short (component type 5121)");
+    g.colorAccessor = R"("componentType": 5121, "normalized": true, "type": "VEC4")";
+    g.colorCount = 2;
+    EXPECT_CONTAINS(loadError(write("short.gltf", g.json())), "count 2 differs from POSITION count 3");
+    g.colorCount = -1;
+    g.colorBytes = bytesOf(std::vector<float>{1, 1, 1, std::nanf(""), 1, 1, 1, 1, 1});
+    g.colorAccessor = R"("componentType": 5126, "type": "VEC3")";
+    EXPECT_CONTAINS(loadError(write("nan.gltf", g.json())), "COLOR_0): element 1 is not finite");
 }
 
 TEST_F(SceneLoader, GlbAndGltfFromTheBuilderLoadTheSame) {

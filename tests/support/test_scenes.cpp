@@ -1,5 +1,7 @@
 #include "support/test_scenes.h"
 
+#include "scene/camera.h"
+
 namespace vcttest {
 
 uint32_t addMaterial(vct::Scene& s, glm::vec3 albedo, glm::vec3 emission) {
@@ -36,6 +38,15 @@ void addBox(vct::Scene& s, glm::vec3 lo, glm::vec3 hi, uint32_t material) {
     addQuad(s, lo + x, y, z, material);       // +x
     addQuad(s, lo, x, z, material);           // -y
     addQuad(s, lo + y, z, x, material);       // +y
+}
+
+vct::Camera lookAt(const vct::Scene& s, glm::vec3 eye, glm::vec3 target, float fovDeg) {
+    vct::CameraRequest cam;
+    cam.hasEye = true;
+    cam.eye = eye;
+    cam.target = target;
+    cam.fovDeg = fovDeg;
+    return vct::resolveCamera(s, cam, 1.f);
 }
 
 void finish(vct::Scene& s) {

@@ -13,5 +13,7 @@ void addQuad(vct::Scene& s, glm::vec3 c, glm::vec3 u, glm::vec3 v, uint32_t mate
 void addBox(vct::Scene& s, glm::vec3 lo, glm::vec3 hi, uint32_t material);
 // Recomputes bounds (call after adding geometry).
 void finish(vct::Scene& s);
+// A square image's camera at `eye` looking at `target` with a vertical field of view in degrees.
+vct::Camera lookAt(const vct::Scene& s, glm::vec3 eye, glm::vec3 target, float fovDeg);
 
 }  // namespace vcttest
