@@ -2,25 +2,10 @@
 // GBUFFER_SURFACE_ONLY: position and normals alone, for renders whose passes read no
 // material (AO without GI or a lit image): no base-colour or emission fetch (about 40% of
 // this pass on a textured scene under llvmpipe) and two attachments fewer.
-// SCENE_NO_VERTEX_COLORS: the scene has none (every vertex white), so no colour is
-// interpolated: one varying fewer, and the base colour is the material's to the bit.
-#define SCENE_FRAGMENT_STAGE  // implicit texture levels (common/scene.glsl)
-#include "common/scene.glsl"
+// Vertex colours and the alpha test: raster/raster_surface.glsl.
+#include "raster/raster_surface.glsl"
 in vec3 vWorldPos;
 in vec3 vNormal;
-in vec2 vUv;
-#ifndef SCENE_NO_VERTEX_COLORS
-in vec4 vColor;
-#endif
-
-// The material's base colour times the vertex colour (glTF: COLOR_0 multiplies both).
-vec4 gbuffer_baseColor(uint material) {
-    vec4 base = scene_baseColor(material, vUv, -1.0);
-#ifndef SCENE_NO_VERTEX_COLORS
-    base *= vColor;
-#endif
-    return base;
-}
 uniform vec3 eyeWorld;
 uniform mat4 viewFromWorld;
 layout(location = 0) out vec4 outPosition;
@@ -30,21 +15,18 @@ layout(location = 3) out vec4 outAlbedo;
 layout(location = 4) out vec4 outEmission;
 
 void main() {
-    scene_uvDx = dFdx(vUv);
-    scene_uvDy = dFdy(vUv);
+    raster_beginFragment();
     uint tri = uint(gl_PrimitiveID);
     uint material = sceneTriMaterial[tri];
 #ifdef GBUFFER_SURFACE_ONLY
 #ifndef SCENE_NO_ALPHA_MASK
     // The alpha test still decides which surface a pixel sees.
-    GpuMaterial m = sceneMaterials[material];
-    if ((m.flags & MATERIAL_ALPHA_MASK) != 0 && gbuffer_baseColor(material).a < m.alphaCutoff) discard;
+    if (raster_alphaCut(material, raster_baseColor(material).a)) discard;
 #endif
 #else
-    vec4 base = gbuffer_baseColor(material);
-    GpuMaterial m = sceneMaterials[material];
+    vec4 base = raster_baseColor(material);
 #ifndef SCENE_NO_ALPHA_MASK
-    if ((m.flags & MATERIAL_ALPHA_MASK) != 0 && base.a < m.alphaCutoff) discard;
+    if (raster_alphaCut(material, base.a)) discard;
 #endif
 #endif
 

@@ -11,7 +11,14 @@ ProgramKey gbufferProgramKey(bool textures, bool alphaMask, bool materials, bool
     return graphicsProgramKey("raster/gbuffer_vert.glsl", "raster/gbuffer_frag.glsl", d);
 }
 
-ProgramKey shadowProgramKey() { return graphicsProgramKey("raster/shadow_vert.glsl", "raster/shadow_frag.glsl"); }
+ProgramKey shadowProgramKey(bool alphaMask, bool textures, bool vertexColors) {
+    if (!alphaMask) return graphicsProgramKey("raster/shadow_vert.glsl", "raster/shadow_frag.glsl");
+    // The alpha test needs the texture coordinates and colours: the G-buffer's vertex stage.
+    ShaderDefines d = {{"SHADOW_ALPHA_TEST", "1"}};
+    if (!textures) d.push_back({"SCENE_NO_TEXTURES", "1"});
+    if (!vertexColors) d.push_back({"SCENE_NO_VERTEX_COLORS", "1"});
+    return graphicsProgramKey("raster/gbuffer_vert.glsl", "raster/shadow_frag.glsl", d);
+}
 ProgramKey directLightProgramKey() { return computeProgramKey("raster/direct_comp.glsl"); }
 ProgramKey compositeProgramKey() { return computeProgramKey("raster/composite_comp.glsl"); }
 
@@ -21,7 +28,9 @@ std::vector<ProgramKey> rasterProgramVariants() {
         for (bool alpha : {false, true})
             for (bool materials : {false, true})
                 for (bool colors : {false, true}) v.push_back(gbufferProgramKey(textures, alpha, materials, colors));
-    v.push_back(shadowProgramKey());
+    v.push_back(shadowProgramKey(false, false, false));
+    for (bool textures : {false, true})
+        for (bool colors : {false, true}) v.push_back(shadowProgramKey(true, textures, colors));
     v.push_back(directLightProgramKey());
     v.push_back(compositeProgramKey());
     return v;

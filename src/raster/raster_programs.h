@@ -11,7 +11,8 @@ namespace vct {
 // The G-buffer: texture sampling, the alpha test and vertex colours compiled out where the
 // scene has none, albedo and emission where the render reads no material (GBuffer::materials).
 ProgramKey gbufferProgramKey(bool textures, bool alphaMask, bool materials, bool vertexColors);
-ProgramKey shadowProgramKey();
+// The shadow maps: the alpha test where the scene has alpha-masked materials.
+ProgramKey shadowProgramKey(bool alphaMask, bool textures, bool vertexColors);
 ProgramKey directLightProgramKey();
 ProgramKey compositeProgramKey();
 

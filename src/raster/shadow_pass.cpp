@@ -54,7 +54,8 @@ void bindShadowMaps(const ShadowMaps& s) {
 ShadowMaps renderShadowMaps(const GpuScene& gpuScene, const Scene& scene, int size, PassTimer& timer) {
     if (scene.lights.empty()) return emptyShadowMaps();
     auto scope = timer.scope("shadow", true, Reruns::WhenSceneChanges);
-    const GLuint program = cachedProgram(shadowProgramKey());
+    const GLuint program =
+        cachedProgram(shadowProgramKey(gpuScene.hasAlphaMask, gpuScene.hasTextures, gpuScene.hasVertexColors));
 
     ShadowMaps s;
     s.size = size;
@@ -79,6 +80,7 @@ ShadowMaps renderShadowMaps(const GpuScene& gpuScene, const Scene& scene, int si
     GLint locClip = glGetUniformLocation(program, "clipFromWorld");
     GLint locLightPos = glGetUniformLocation(program, "lightPos");
     GLint locStore = glGetUniformLocation(program, "storeDistance");
+    bindSceneBuffers(gpuScene);  // the alpha test's materials, triangles and textures
     glBindVertexArray(gpuScene.vao.id());
 
     auto draw = [&](const glm::mat4& clipFromWorld) {

@@ -2,6 +2,7 @@
 // the G-buffer, the dense and sparse voxelizers and the path tracer. Checked against
 // independent paths: the same colours given as material factors instead must render the
 // same images, and the G-buffer's interpolated colour must match the CPU's barycentric one.
+// Their alpha, like the material's, takes part in the alpha test everywhere, shadow maps too.
 #include "eval/metrics.h"
 #include "gl/context.h"
 #include "render/renderer.h"
@@ -182,4 +183,51 @@ TEST(VertexColors, TheirAlphaTakesPartInTheAlphaTest) {
             EXPECT_GT(darkest, 0.9) << what << ": the floor alone is open";
         }
     }
+}
+
+TEST(VertexColors, TexelsTheAlphaTestCutsCastNoShadow) {
+    // A floor lit from straight above, under a plate whose texels are all cut away: by the
+    // material's alpha (factor 0) or by its vertex colours' (0): the shadow maps see the
+    // floor alone, as the G-buffer and the ray tracer do; the same plate kept casts a shadow.
+    Scene open;
+    const uint32_t floorMaterial = vcttest::addMaterial(open, glm::vec3(0.8f));
+    vcttest::addQuad(open, glm::vec3(-2.f, 0.f, 2.f), glm::vec3(4.f, 0.f, 0.f), glm::vec3(0.f, 0.f, -4.f),
+                     floorMaterial);
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::vec3(0.f, -1.f, 0.f);
+    sun.color = glm::vec3(2.f);
+    open.lights.push_back(sun);
+    auto withPlate = [&](float materialAlpha, float vertexAlpha) {
+        Scene s = open;
+        Material plate;
+        plate.baseColorFactor = glm::vec4(0.5f, 0.5f, 0.5f, materialAlpha);
+        plate.alphaMask = true;
+        plate.alphaCutoff = 0.5f;
+        plate.doubleSided = true;
+        s.materials.push_back(plate);
+        vcttest::addQuad(s, glm::vec3(-0.5f, 0.5f, 0.5f), glm::vec3(1.f, 0.f, 0.f), glm::vec3(0.f, 0.f, -1.f),
+                         uint32_t(s.materials.size() - 1));
+        s.colors.assign(s.positions.size(), glm::vec4(1.f));
+        for (size_t v = 4; v < 8; ++v) s.colors[v].a = vertexAlpha;
+        vcttest::finish(s);
+        return s;
+    };
+    vcttest::finish(open);
+    // From the side, below the plate's height: the floor under the plate is in view.
+    auto direct = [](const Scene& s) {
+        RenderSession session(s);
+        RenderRequest r;
+        r.width = r.height = 32;
+        r.camera = vcttest::lookAt(s, glm::vec3(0.f, 0.3f, 2.5f), glm::vec3(0.f, 0.f, 0.f), 50.f);
+        r.aovs = {"direct"};
+        const RenderResult out = session.render(r);
+        GlContext::shared().checkErrors("alpha-tested shadows");
+        return out.aovs.at("direct");
+    };
+    const Image floorAlone = direct(open);
+    const double shadowed = computeErrorMetrics(direct(withPlate(1.f, 1.f)), floorAlone).maxAbs;
+    EXPECT_GT(shadowed, 0.1);  // the kept plate's shadow on the floor
+    EXPECT_LT(computeErrorMetrics(direct(withPlate(0.f, 1.f)), floorAlone).maxAbs, 0.01 * shadowed);
+    EXPECT_LT(computeErrorMetrics(direct(withPlate(1.f, 0.f)), floorAlone).maxAbs, 0.01 * shadowed);
 }
