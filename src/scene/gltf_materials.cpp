@@ -152,6 +152,7 @@ UvMapping uvMappingOf(const LoadContext& load, const tinygltf::TextureInfo& info
 
 void convertMaterials(LoadContext& load) {
     const tinygltf::Model& model = load.model;
+    std::vector<std::string> blended;  // materials whose alphaMode is BLEND
     for (size_t i = 0; i < model.materials.size(); ++i) {
         const tinygltf::Material& m = model.materials[i];
         const std::string where = label("material", int(i), m.name);
@@ -190,9 +191,18 @@ void convertMaterials(LoadContext& load) {
         load.materialUv.push_back(uv);
         out.doubleSided = m.doubleSided;
         out.alphaMask = m.alphaMode == "MASK";
+        if (m.alphaMode == "BLEND") blended.push_back(where);
         out.alphaCutoff = float(m.alphaCutoff);
         if (!std::isfinite(out.alphaCutoff)) load.fail(where + ": alphaCutoff is not finite");
         load.scene.materials.push_back(std::move(out));
+    }
+    if (!blended.empty()) {
+        // Said once for all of them: a scene of many glass panes would otherwise fill the log.
+        std::string names;
+        for (size_t i = 0; i < blended.size() && i < 4; ++i) names += (i ? ", " : "") + blended[i];
+        if (blended.size() > 4) names += " and " + std::to_string(blended.size() - 4) + " more";
+        load.scene.warnings.push_back(names + ": alphaMode BLEND is drawn opaque (vct renders no partial "
+                                              "transparency: such surfaces occlude and reflect as opaque ones)");
     }
 }
 

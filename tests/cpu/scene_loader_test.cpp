@@ -669,6 +669,19 @@ TEST_F(SceneLoader, SamplerWrapModesAreReadAndUnknownOnesRefused) {
                     "sampler 0 'odd' wrapT: 9729 is not a wrap mode");
 }
 
+TEST_F(SceneLoader, BlendedMaterialsAreDrawnOpaqueAndTheLoaderSaysSo) {
+    HandGltf g;
+    g.positions = kTriangle;
+    g.materialField = ", \"material\": 1";
+    g.extraTop = R"(, "materials": [{"name": "a", "alphaMode": "BLEND"}, {"name": "glass", "alphaMode": "BLEND",
+        "pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 0.2]}}, {"alphaMode": "OPAQUE"}])";
+    const Scene s = vct::loadScene(write("blend.gltf", g.json()));
+    ASSERT_EQ(s.materials.size(), 3u);
+    EXPECT_FALSE(s.materials[1].alphaMask);
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_CONTAINS(s.warnings[0], "material 0 'a', material 1 'glass': alphaMode BLEND is drawn opaque");
+}
+
 // Raw bytes of `values` (floats or unsigned integers) for HandGltf::colorBytes.
 template <typename T>
 std::vector<unsigned char> bytesOf(const std::vector<T>& values) {
