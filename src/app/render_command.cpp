@@ -166,7 +166,11 @@ int runInfo(const std::string& scenePath, const std::string& glDevice) {
     SceneFeatures f = analyzeScene(scene);
     std::cout << "scene: " << scenePath << "\n"
               << "triangles: " << f.triangles << "\nvertices: " << scene.positions.size()
-              << "\nmaterials: " << f.materials << "\ntextures: " << scene.textures.size()
+              << "\nmaterials: " << f.materials << " (alpha-masked: "
+              << std::count_if(scene.materials.begin(), scene.materials.end(),
+                               [](const Material& m) { return m.alphaMask; })
+              << ")\ntextures: " << scene.textures.size()
+              << "\nvertex colours: " << (scene.colors.empty() ? "no" : "yes")
               << "\nlights: " << f.lights << "\nemissive: " << (f.hasEmission ? "yes" : "no")
               << "\noff-screen occluders: " << (f.hasOffscreenOccluders ? "yes" : "no") << "\nbounds: ("
               << scene.bounds.min.x << ", " << scene.bounds.min.y << ", " << scene.bounds.min.z << ") .. ("

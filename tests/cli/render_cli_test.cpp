@@ -171,7 +171,25 @@ TEST(RenderCli, InfoPrintsRendererAndCounts) {
     auto r = runVct("info scenes/cornell_box.gltf");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("gl_renderer:"), std::string::npos);
-    EXPECT_NE(r.output.find("triangles:"), std::string::npos);
+    EXPECT_NE(r.output.find("triangles: 36\n"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("materials: 4 (alpha-masked: 0)\n"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("vertex colours: no\n"), std::string::npos) << r.output;
+
+    // One triangle with red, green and blue corners and an alpha-masked material.
+    const std::string dir = freshTempDir("info_colours");
+    const std::string path = dir + "/coloured.gltf";
+    std::ofstream(path) << R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+        "nodes": [{"mesh": 0}], "materials": [{"alphaMode": "MASK"}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "COLOR_0": 1}, "material": 0}]}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": 3,
+                       "min": [0, 0, 0], "max": [1, 1, 0]},
+                      {"bufferView": 1, "componentType": 5126, "type": "VEC3", "count": 3}],
+        "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 36}],
+        "buffers": [{"byteLength": 72, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAAAAAAAAAAAAIA/"}]})";
+    r = runVct("info " + path);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("materials: 1 (alpha-masked: 1)\n"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("vertex colours: yes\n"), std::string::npos) << r.output;
 }
 
 TEST(RenderCli, SponzaRendersTextured) {
