@@ -1,7 +1,8 @@
 // The scene buffers (layouts in common/scene_shared.h) and material lookups shared by the
 // G-buffer, shadow and voxelization shaders. Variants: SCENE_NO_TEXTURES compiles the
-// lookups without texture sampling, SCENE_NO_ALPHA_MASK without the alpha test (the pass
-// planner picks them from the scene's features).
+// lookups without texture sampling, SCENE_NO_ALPHA_MASK without the alpha test,
+// SCENE_NO_WRAP_MODES (fragment stages) without clamp and mirror (the pass planner and
+// raster_programs.cpp pick them from the scene's features).
 #include "common/scene_shared.h"
 
 layout(std430, binding = SCENE_BINDING_VERTICES) readonly buffer SceneVertices { GpuVertex sceneVertices[]; };
@@ -12,17 +13,16 @@ layout(std430, binding = SCENE_BINDING_LIGHTS) readonly buffer SceneLights { Gpu
 layout(std430, binding = SCENE_BINDING_TRINORMAL) readonly buffer SceneTriNormal { vec4 sceneTriNormal[]; };
 layout(binding = SCENE_UNIT_TEXTURES) uniform sampler2DArray sceneTextures;
 
-// One texture coordinate under wrap mode `mode` (TEXTURE_WRAP_*, not repeat) for the array's
-// REPEAT sampler: clamp-to-edge and mirrored repeat fold it into [0, 1] and hold it half a
-// texel of the sampled level inside, so the filter does not reach across to the opposite
-// edge (texture_sampler.cpp is the CPU's side of this).
+// One texture coordinate under wrap mode `mode` (TEXTURE_WRAP_*) for the array's REPEAT
+// sampler: repeat is the sampler's own (c unchanged, to the bit); clamp-to-edge and mirrored
+// repeat fold it into [0, 1] and hold it half a texel of the sampled level inside, so the
+// filter does not reach across to the opposite edge (texture_sampler.cpp is the CPU's side
+// of this). Selects, not branches: llvmpipe pays for an untaken branch's texture fetch in
+// every lane (the voxelizer took 15% longer on Sponza with a branch per mode).
 float scene_wrapCoordinate(float c, int mode, float halfTexel) {
-    if (mode == TEXTURE_WRAP_REPEAT) return c;
-    if (mode == TEXTURE_WRAP_MIRRORED_REPEAT) {
-        float m = c - 2.0 * floor(0.5 * c);  // [0, 2): forwards, then backwards
-        c = m <= 1.0 ? m : 2.0 - m;
-    }
-    return clamp(c, halfTexel, 1.0 - halfTexel);
+    float m = c - 2.0 * floor(0.5 * c);  // [0, 2): forwards, then backwards
+    float folded = mode == TEXTURE_WRAP_MIRRORED_REPEAT ? (m <= 1.0 ? m : 2.0 - m) : c;
+    return mode == TEXTURE_WRAP_REPEAT ? c : clamp(folded, halfTexel, 1.0 - halfTexel);
 }
 
 #ifdef SCENE_FRAGMENT_STAGE
@@ -34,8 +34,14 @@ vec2 scene_uvDx = vec2(0.0), scene_uvDy = vec2(0.0);
 
 // Layer `layer` at uv with the wrap modes at `shift` (MATERIAL_*_WRAP_SHIFT) of a material's
 // flags. `lod` < 0: the level the hardware picks, which only a fragment stage has
-// (SCENE_FRAGMENT_STAGE). Repeat on both axes is the sampler's own and samples as it always did.
+// (SCENE_FRAGMENT_STAGE). Repeat on both axes samples as it always did.
 vec4 scene_sampleLayer(int layer, vec2 uv, int flags, int shift, float lod) {
+#if defined(SCENE_FRAGMENT_STAGE) && defined(SCENE_NO_WRAP_MODES)
+    // Every texture repeats: the sampler's own. (The branch below cost the G-buffer with
+    // materials 20% on Sponza under llvmpipe, taken or not.)
+    return lod < 0.0 ? texture(sceneTextures, vec3(uv, float(layer)))
+                     : textureLod(sceneTextures, vec3(uv, float(layer)), lod);
+#else
     int modes = (flags >> shift) & 15;
 #ifdef SCENE_FRAGMENT_STAGE
     if (modes == 0) return lod < 0.0 ? texture(sceneTextures, vec3(uv, float(layer)))
@@ -45,13 +51,12 @@ vec4 scene_sampleLayer(int layer, vec2 uv, int flags, int shift, float lod) {
         vec2 dx = scene_uvDx * float(SCENE_TEXTURE_SIZE), dy = scene_uvDy * float(SCENE_TEXTURE_SIZE);
         lod = max(0.0, 0.5 * log2(max(max(dot(dx, dx), dot(dy, dy)), 1e-30)));
     }
-#else
-    if (modes == 0) return textureLod(sceneTextures, vec3(uv, float(layer)), lod);
 #endif
     // Trilinear filtering reads the level above lod too: half of that level's texel.
     float halfTexel = 0.5 * exp2(ceil(max(lod, 0.0))) / float(SCENE_TEXTURE_SIZE);
     vec2 wrapped = vec2(scene_wrapCoordinate(uv.x, modes & 3, halfTexel), scene_wrapCoordinate(uv.y, modes >> 2, halfTexel));
     return textureLod(sceneTextures, vec3(wrapped, float(layer)), lod);
+#endif
 }
 
 // Linear RGBA base colour (the array is sRGB, so sampling decodes). `lod` < 0 lets the

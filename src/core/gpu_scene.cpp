@@ -132,6 +132,8 @@ GpuScene uploadScene(const Scene& scene) {
     g.hasTextures = !scene.textures.empty();
     for (const Material& m : scene.materials) g.hasAlphaMask |= m.alphaMask;
     g.hasVertexColors = !scene.colors.empty();
+    for (const Texture& t : scene.textures)
+        g.hasWrapModes |= t.wrapS != TextureWrap::Repeat || t.wrapT != TextureWrap::Repeat;
 
     // Shaders read the scene's arrays as shader storage blocks, each within the device's
     // block size (GL guarantees 128 MiB: 2.8 million vertices, 11 million triangles).

@@ -24,6 +24,7 @@ struct GpuScene {
     bool hasTextures = false;   // any texture referenced: else shaders compile without sampling
     bool hasAlphaMask = false;  // any alpha-masked material: else no alpha test
     bool hasVertexColors = false;  // Scene::colors given: else the G-buffer reads none
+    bool hasWrapModes = false;     // a texture that clamps or mirrors: else the raster compiles them out
     Bounds3 bounds;
 };
 

@@ -12,7 +12,7 @@ GBuffer renderGBuffer(const GpuScene& scene, const View& view, PassTimer& timer,
     auto scope = timer.scope("gbuffer");
     // One program per shader variant: features the scene does not use are compiled out.
     const GLuint program =
-        cachedProgram(gbufferProgramKey(scene.hasTextures, scene.hasAlphaMask, materials, scene.hasVertexColors));
+        cachedProgram(gbufferProgramKey(rasterFeaturesOf(scene), materials));
 
     GBuffer g;
     g.width = view.width;

@@ -2,23 +2,38 @@
 
 namespace vct {
 
-ProgramKey gbufferProgramKey(bool textures, bool alphaMask, bool materials, bool vertexColors) {
+RasterSceneFeatures rasterFeaturesOf(const GpuScene& s) {
+    return {s.hasTextures, s.hasAlphaMask, s.hasVertexColors, s.hasTextures && s.hasWrapModes};
+}
+
+namespace {
+
+// The SCENE_NO_* defines of what the scene lacks.
+ShaderDefines sceneDefines(const RasterSceneFeatures& f) {
     ShaderDefines d;
-    if (!vertexColors) d.push_back({"SCENE_NO_VERTEX_COLORS", "1"});
+    if (!f.vertexColors) d.push_back({"SCENE_NO_VERTEX_COLORS", "1"});
+    if (!f.textures) d.push_back({"SCENE_NO_TEXTURES", "1"});
+    if (!f.alphaMask) d.push_back({"SCENE_NO_ALPHA_MASK", "1"});
+    if (!f.wrapModes) d.push_back({"SCENE_NO_WRAP_MODES", "1"});
+    return d;
+}
+
+}  // namespace
+
+ProgramKey gbufferProgramKey(const RasterSceneFeatures& f, bool materials) {
+    ShaderDefines d = sceneDefines(f);
     if (!materials) d.push_back({"GBUFFER_SURFACE_ONLY", "1"});
-    if (!textures) d.push_back({"SCENE_NO_TEXTURES", "1"});
-    if (!alphaMask) d.push_back({"SCENE_NO_ALPHA_MASK", "1"});
     return graphicsProgramKey("raster/gbuffer_vert.glsl", "raster/gbuffer_frag.glsl", d);
 }
 
-ProgramKey shadowProgramKey(bool alphaMask, bool textures, bool vertexColors) {
-    if (!alphaMask) return graphicsProgramKey("raster/shadow_vert.glsl", "raster/shadow_frag.glsl");
+ProgramKey shadowProgramKey(const RasterSceneFeatures& f) {
+    if (!f.alphaMask) return graphicsProgramKey("raster/shadow_vert.glsl", "raster/shadow_frag.glsl");
     // The alpha test needs the texture coordinates and colours: the G-buffer's vertex stage.
-    ShaderDefines d = {{"SHADOW_ALPHA_TEST", "1"}};
-    if (!textures) d.push_back({"SCENE_NO_TEXTURES", "1"});
-    if (!vertexColors) d.push_back({"SCENE_NO_VERTEX_COLORS", "1"});
+    ShaderDefines d = sceneDefines(f);
+    d.push_back({"SHADOW_ALPHA_TEST", "1"});
     return graphicsProgramKey("raster/gbuffer_vert.glsl", "raster/shadow_frag.glsl", d);
 }
+
 ProgramKey directLightProgramKey() { return computeProgramKey("raster/direct_comp.glsl"); }
 ProgramKey compositeProgramKey() { return computeProgramKey("raster/composite_comp.glsl"); }
 
@@ -26,11 +41,14 @@ std::vector<ProgramKey> rasterProgramVariants() {
     std::vector<ProgramKey> v;
     for (bool textures : {false, true})
         for (bool alpha : {false, true})
-            for (bool materials : {false, true})
-                for (bool colors : {false, true}) v.push_back(gbufferProgramKey(textures, alpha, materials, colors));
-    v.push_back(shadowProgramKey(false, false, false));
-    for (bool textures : {false, true})
-        for (bool colors : {false, true}) v.push_back(shadowProgramKey(true, textures, colors));
+            for (bool colors : {false, true})
+                for (bool wrap : {false, true}) {
+                    if (wrap && !textures) continue;  // wrap modes need a texture
+                    const RasterSceneFeatures f{textures, alpha, colors, wrap};
+                    for (bool materials : {false, true}) v.push_back(gbufferProgramKey(f, materials));
+                    if (alpha) v.push_back(shadowProgramKey(f));  // without masks: one program, below
+                }
+    v.push_back(shadowProgramKey(RasterSceneFeatures{false, false, false, false}));
     v.push_back(directLightProgramKey());
     v.push_back(compositeProgramKey());
     return v;

@@ -54,8 +54,7 @@ void bindShadowMaps(const ShadowMaps& s) {
 ShadowMaps renderShadowMaps(const GpuScene& gpuScene, const Scene& scene, int size, PassTimer& timer) {
     if (scene.lights.empty()) return emptyShadowMaps();
     auto scope = timer.scope("shadow", true, Reruns::WhenSceneChanges);
-    const GLuint program =
-        cachedProgram(shadowProgramKey(gpuScene.hasAlphaMask, gpuScene.hasTextures, gpuScene.hasVertexColors));
+    const GLuint program = cachedProgram(shadowProgramKey(rasterFeaturesOf(gpuScene)));
 
     ShadowMaps s;
     s.size = size;
