@@ -20,8 +20,8 @@ layout(binding = SCENE_UNIT_TEXTURES) uniform sampler2DArray sceneTextures;
 // of this). Selects, not branches: llvmpipe pays for an untaken branch's texture fetch in
 // every lane (the voxelizer took 15% longer on Sponza with a branch per mode).
 float scene_wrapCoordinate(float c, int mode, float halfTexel) {
-    float m = c - 2.0 * floor(0.5 * c);  // [0, 2): forwards, then backwards
-    float folded = mode == TEXTURE_WRAP_MIRRORED_REPEAT ? (m <= 1.0 ? m : 2.0 - m) : c;
+    float mirrored = scene_mirrorCoordinate(c);
+    float folded = mode == TEXTURE_WRAP_MIRRORED_REPEAT ? mirrored : c;
     return mode == TEXTURE_WRAP_REPEAT ? c : clamp(folded, halfTexel, 1.0 - halfTexel);
 }
 
@@ -31,6 +31,14 @@ float scene_wrapCoordinate(float c, int mode, float halfTexel) {
 // wrong where a 2 x 2 pixel quad straddles two triangles (llvmpipe; the TextureWrap test).
 vec2 scene_uvDx = vec2(0.0), scene_uvDy = vec2(0.0);
 #endif
+
+// True where glTF's alpha test cuts a texel of `material` with base-colour alpha `alpha` away
+// (the G-buffer, the shadow maps and the voxelizer; the ray tracer's filter in
+// src/reference/embree_scene.cpp).
+bool scene_alphaCut(uint material, float alpha) {
+    GpuMaterial m = sceneMaterials[material];
+    return (m.flags & MATERIAL_ALPHA_MASK) != 0 && alpha < m.alphaCutoff;
+}
 
 // Layer `layer` at uv with the wrap modes at `shift` (MATERIAL_*_WRAP_SHIFT) of a material's
 // flags. `lod` < 0: the level the hardware picks, which only a fragment stage has

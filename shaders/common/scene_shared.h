@@ -3,6 +3,12 @@
 #pragma once
 #include "common/shared_types.h"
 
+#ifdef __cplusplus
+#define SCENE_FN inline
+#else
+#define SCENE_FN
+#endif
+
 VCT_BEGIN_NAMESPACE
 
 // Shader storage binding points of the scene buffers.
@@ -33,6 +39,23 @@ VCT_CONST int MATERIAL_EMISSIVE_WRAP_SHIFT = 6;
 VCT_CONST int TEXTURE_WRAP_REPEAT = 0;  // TextureWrap's order (scene/scene.h)
 VCT_CONST int TEXTURE_WRAP_CLAMP_TO_EDGE = 1;
 VCT_CONST int TEXTURE_WRAP_MIRRORED_REPEAT = 2;
+
+// Mirrored repeat of one texture coordinate into [0, 1]: period 2, forwards, then backwards.
+// The CPU sampler (src/scene/texture_sampler.cpp) and the shaders (common/scene.glsl) fold alike.
+SCENE_FN float scene_mirrorCoordinate(float c) {
+    float m = c - 2.0f * floor(0.5f * c);  // [0, 2)
+    return m <= 1.0f ? m : 2.0f - m;
+}
+
+// The vertex colour at barycentric weights b of a triangle whose corners have colours c0, c1,
+// c2, for the CPU readers (texture_sampler.cpp) and the GPU voxelizer alike. A triangle of one
+// colour keeps it exactly: weights summing to 1 within rounding would move it by an ulp, and
+// the voxelizers' fixed-point sums with it, so a scene without vertex colours voxelizes as it
+// did before they existed.
+SCENE_FN vec4 scene_vertexColor(vec4 c0, vec4 c1, vec4 c2, vec3 b) {
+    if (c0 == c1 && c1 == c2) return c0;
+    return b.x * c0 + b.y * c1 + b.z * c2;
+}
 
 struct GpuMaterial {
     vec4 baseColor;       // linear RGBA factor

@@ -21,12 +21,12 @@ void main() {
 #ifdef GBUFFER_SURFACE_ONLY
 #ifndef SCENE_NO_ALPHA_MASK
     // The alpha test still decides which surface a pixel sees.
-    if (raster_alphaCut(material, raster_baseColor(material).a)) discard;
+    if (scene_alphaCut(material, raster_baseColor(material).a)) discard;
 #endif
 #else
     vec4 base = raster_baseColor(material);
 #ifndef SCENE_NO_ALPHA_MASK
-    if (raster_alphaCut(material, base.a)) discard;
+    if (scene_alphaCut(material, base.a)) discard;
 #endif
 #endif
 

@@ -1,7 +1,6 @@
 // What a rasterized fragment of the scene sees of its material, shared by the G-buffer and
-// the shadow maps so both cut glTF's alpha-masked texels alike (and alike to the ray tracer's
-// filter, src/reference/embree_scene.cpp): the base colour times the vertex colour, and the
-// alpha test. Reads the inputs raster/gbuffer_vert.glsl writes. Defines as common/scene.glsl,
+// the shadow maps so both cut glTF's alpha-masked texels alike (scene_alphaCut, common/scene.glsl,
+// with this base colour): the base colour times the vertex colour. Reads the inputs raster/gbuffer_vert.glsl writes. Defines as common/scene.glsl,
 // and SCENE_NO_VERTEX_COLORS where the scene has none (no colour interpolated: the base
 // colour is the material's to the bit).
 #define SCENE_FRAGMENT_STAGE  // implicit texture levels (common/scene.glsl)
@@ -24,10 +23,4 @@ vec4 raster_baseColor(uint material) {
     base *= vColor;
 #endif
     return base;
-}
-
-// True where the alpha test cuts the fragment away (alpha the base colour's).
-bool raster_alphaCut(uint material, float alpha) {
-    GpuMaterial m = sceneMaterials[material];
-    return (m.flags & MATERIAL_ALPHA_MASK) != 0 && alpha < m.alphaCutoff;
 }

@@ -14,7 +14,7 @@ void main() {
 #ifdef SHADOW_ALPHA_TEST
     raster_beginFragment();
     uint material = sceneTriMaterial[uint(gl_PrimitiveID)];
-    if (raster_alphaCut(material, raster_baseColor(material).a)) discard;
+    if (scene_alphaCut(material, raster_baseColor(material).a)) discard;
 #endif
     outDistance = storeDistance != 0 ? length(vWorldPos - lightPos) : 0.0;
 }

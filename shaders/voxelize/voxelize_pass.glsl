@@ -147,14 +147,10 @@ void vox_add64(int channel, ivec3 v, float x) {
 void vox_accumulate(Tri tri, ivec3 v) {
     vec3 b = vox_barycentrics(tri, vec3(v) + 0.5);
     vec2 uv = b.x * tri.uv[0] + b.y * tri.uv[1] + b.z * tri.uv[2];
-    // A triangle of one colour keeps it exactly (vertexColorAt in texture_sampler.cpp: the
-    // sparse voxelizer's rule), so a scene without vertex colours voxelizes as it always did.
-    vec4 color = tri.color[0] == tri.color[1] && tri.color[1] == tri.color[2]
-                     ? tri.color[0]
-                     : b.x * tri.color[0] + b.y * tri.color[1] + b.z * tri.color[2];
+    vec4 color = scene_vertexColor(tri.color[0], tri.color[1], tri.color[2], b);
     vec4 base = scene_baseColor(tri.material, uv, tri.lod) * color;
+    if (scene_alphaCut(tri.material, base.a)) return;
     GpuMaterial m = sceneMaterials[tri.material];
-    if ((m.flags & MATERIAL_ALPHA_MASK) != 0 && base.a < m.alphaCutoff) return;
     uint w = tri.weight;
 #ifdef EMISSION_PASS
     vec3 e = clamp(scene_emission(tri.material, uv, tri.lod), 0.0, VOX_EMISSION_MAX);

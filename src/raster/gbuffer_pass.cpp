@@ -11,8 +11,7 @@ namespace vct {
 GBuffer renderGBuffer(const GpuScene& scene, const View& view, PassTimer& timer, bool materials) {
     auto scope = timer.scope("gbuffer");
     // One program per shader variant: features the scene does not use are compiled out.
-    const GLuint program =
-        cachedProgram(gbufferProgramKey(rasterFeaturesOf(scene), materials));
+    const GLuint program = cachedProgram(gbufferProgramKey(rasterFeaturesOf(scene), materials));
 
     GBuffer g;
     g.width = view.width;

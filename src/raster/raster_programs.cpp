@@ -3,7 +3,7 @@
 namespace vct {
 
 RasterSceneFeatures rasterFeaturesOf(const GpuScene& s) {
-    return {s.hasTextures, s.hasAlphaMask, s.hasVertexColors, s.hasTextures && s.hasWrapModes};
+    return {s.hasTextures, s.hasAlphaMask, s.hasVertexColors, s.hasWrapModes};
 }
 
 namespace {

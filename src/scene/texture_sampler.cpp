@@ -1,5 +1,7 @@
 #include "scene/texture_sampler.h"
 
+#include "common/scene_shared.h"
+
 #include <array>
 #include <cmath>
 
@@ -42,10 +44,7 @@ float reduceCoordinate(float c, TextureWrap wrap) {
     if (!std::isfinite(c)) return 0.f;
     switch (wrap) {
     case TextureWrap::Repeat: return c - std::floor(c);
-    case TextureWrap::MirroredRepeat: {
-        const float m = c - 2.f * std::floor(0.5f * c);  // [0, 2): forwards, then backwards
-        return m <= 1.f ? m : 2.f - m;
-    }
+    case TextureWrap::MirroredRepeat: return gpu::scene_mirrorCoordinate(c);
     case TextureWrap::ClampToEdge: break;
     }
     return std::min(std::max(c, 0.f), 1.f);
@@ -83,11 +82,7 @@ glm::vec4 sampleTexture(const Texture& texture, glm::vec2 uv, bool srgb) {
 glm::vec4 vertexColorAt(const Scene& scene, uint32_t tri, glm::vec3 b) {
     if (scene.colors.size() != scene.positions.size() || tri >= scene.triangles.size()) return glm::vec4(1.f);
     const glm::uvec3& t = scene.triangles[tri];
-    const glm::vec4 c0 = scene.colors[t.x], c1 = scene.colors[t.y], c2 = scene.colors[t.z];
-    // A triangle of one colour keeps it exactly: weights summing to 1 within rounding would
-    // move it by an ulp, and the voxelizers' fixed-point sums with it.
-    if (c0 == c1 && c1 == c2) return c0;
-    return b.x * c0 + b.y * c1 + b.z * c2;
+    return gpu::scene_vertexColor(scene.colors[t.x], scene.colors[t.y], scene.colors[t.z], b);
 }
 
 glm::vec3 materialAlbedo(const Scene& scene, uint32_t material, glm::vec2 uv, glm::vec4 vertexColor) {
