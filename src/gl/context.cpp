@@ -37,12 +37,19 @@ bool hasExtension(const char* list, const char* name) {
     return false;
 }
 
+}  // namespace
+
+bool eglCanOpenDevices(const char* clientExtensions) {
+    return (hasExtension(clientExtensions, "EGL_EXT_device_enumeration") ||
+            hasExtension(clientExtensions, "EGL_EXT_device_base")) &&
+           hasExtension(clientExtensions, "EGL_EXT_platform_device");
+}
+
+namespace {
+
 // The first EGL device that is not Mesa's software device, or nothing.
 EGLDisplay openDeviceDisplay() {
-    const char* clientExts = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    if (!hasExtension(clientExts, "EGL_EXT_device_enumeration") ||
-        !hasExtension(clientExts, "EGL_EXT_platform_device"))
-        return EGL_NO_DISPLAY;
+    if (!eglCanOpenDevices(eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS))) return EGL_NO_DISPLAY;
     EGLDeviceEXT devices[16];
     EGLint count = 0;
     if (!eglQueryDevicesEXT(16, devices, &count)) return EGL_NO_DISPLAY;

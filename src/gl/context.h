@@ -54,4 +54,9 @@ private:
 
 GlDevice parseGlDevice(const std::string& name);  // "auto", "surfaceless", "device"
 
+// Whether EGL's client extension string offers what opening a device display needs:
+// enumeration (EGL_EXT_device_enumeration, or EGL_EXT_device_base, which NVIDIA's EGL names
+// alone and which includes it) and EGL_EXT_platform_device.
+bool eglCanOpenDevices(const char* clientExtensions);
+
 }  // namespace vct

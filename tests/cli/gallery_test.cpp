@@ -145,9 +145,13 @@ TEST(GalleryCli, WritesPagesAssetsAndImages) {
     EXPECT_NE(index.find("ssao-crytek"), std::string::npos);
     EXPECT_NE(index.find("gtao"), std::string::npos);
     const std::string page = readText(root / (s.caseId + ".html"));
-    for (const char* needle : {"<svg", "class=\"pareto\"", "id=\"view-main\"", "id=\"chk-roi\"", "llvmpipe",
+    for (const char* needle : {"<svg", "class=\"pareto\"", "id=\"view-main\"", "id=\"chk-roi\"",
                                "made for this project", "64 x 64 px", "exposure 0 EV"})
         EXPECT_NE(page.find(needle), std::string::npos) << "scene page lacks " << needle;
+    // The GL renderer the comparison ran on (llvmpipe here, a GPU's name elsewhere).
+    const std::string renderer = nlohmann::json::parse(readText(data / "results.json")).value("gl_renderer", "");
+    ASSERT_FALSE(renderer.empty());
+    EXPECT_NE(page.find(renderer), std::string::npos) << "scene page lacks the renderer " << renderer;
 }
 
 TEST(GalleryCli, DisplayPngsAreTheExrsAsStored) {

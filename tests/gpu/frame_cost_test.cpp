@@ -13,6 +13,7 @@
 #include "scene/gltf_loader.h"
 #include "support/records.h"
 #include "support/run_vct.h"
+#include "support/filter_precision.h"
 
 #include <gtest/gtest.h>
 
@@ -179,14 +180,16 @@ TEST(FrameCost, ConeCountersFollowTheShadersFetchRules) {
     EXPECT_LE(ratio(gi), 5.0);
     EXPECT_DOUBLE_EQ(ratio(aoIso), 1.0);
     EXPECT_DOUBLE_EQ(ratio(giIso), 2.0);
-    // The sparse CPU tracer runs the same march over the same levels and counts as the GPU.
+    // The sparse CPU tracer runs the same march over the same levels and counts as the GPU:
+    // the same steps within 1%, 5% where hardware filtering moves where a cone saturates
+    // (support/filter_precision.h; an H200: 2.2%).
     RenderRequest sparseAo = cornellRequest(scene);
     sparseAo.ao = "vct";
     sparseAo.gi = "none";
     sparseAo.backend = "vdb";
     const nlohmann::json vdb = session.render(sparseAo).extra.at("cone_ao");
     EXPECT_NEAR(vdb["samples_per_pixel"].get<double>(), ao["samples_per_pixel"].get<double>(),
-                0.01 * ao["samples_per_pixel"].get<double>());
+                vcttest::filterTolerance(0.01, 0.05) * ao["samples_per_pixel"].get<double>());
     EXPECT_NEAR(ratio(vdb), ratio(ao), 0.01);
     const nlohmann::json lanes = counters("vct", "none", {"vct.lanes=4"});
     EXPECT_EQ(lanes["cones_marched"], 24);

@@ -4,6 +4,7 @@
 // sparse. The finer grids and the full tables are bench_convergence's (docs/convergence.md).
 #include "eval/convergence.h"
 #include "scene/scene_builder.h"
+#include "support/filter_precision.h"
 
 #include <gtest/gtest.h>
 
@@ -50,13 +51,14 @@ double mean(const std::vector<CaseErrors>& errors, int res) {
 }
 
 // Every off-screen case, rooms included, at 64^3 on both backends with `p`: the voxel errors
-// agree within 2e-3.
+// agree within 2e-3 (8e-3 on hardware texture filtering: support/filter_precision.h).
 void expectBackendsAgree(const ParamMap& p) {
     const std::vector<CaseErrors> dense = voxelErrors({64}, "gl", p, true);
     const std::vector<CaseErrors> sparse = voxelErrors({64}, "vdb", p, true);
     ASSERT_EQ(dense.size(), sparse.size());
     for (size_t i = 0; i < dense.size(); ++i)
-        EXPECT_NEAR(sparse[i].voxel.at(64), dense[i].voxel.at(64), 2e-3) << dense[i].name;
+        EXPECT_NEAR(sparse[i].voxel.at(64), dense[i].voxel.at(64), vcttest::filterTolerance(2e-3, 8e-3))
+            << dense[i].name;
 }
 
 }  // namespace
@@ -166,12 +168,13 @@ TEST(VctConvergence, GiOfAClosedEmissiveRoomKeepsItsLightWithDepthLevels) {
 }
 
 // The sparse backend's GI (injection of two-sided emitters, directional levels, the march)
-// against the dense one on every emitting case at 64^3: the same gathered light within 2e-3.
+// against the dense one on every emitting case at 64^3: the same gathered light within 2e-3
+// (0.02 on hardware texture filtering: support/filter_precision.h).
 TEST(VctConvergence, SparseGiMatchesTheDenseGi) {
     for (const AoConvergenceCase& c : giConvergenceCases()) {
         const std::vector<double> dense = vctGiAt(c, 64, "gl", ParamMap());
         const std::vector<double> sparse = vctGiAt(c, 64, "vdb", ParamMap());
-        EXPECT_LT(pointError(sparse, dense).max, 2e-3) << c.name;
+        EXPECT_LT(pointError(sparse, dense).max, vcttest::filterTolerance(2e-3, 0.02)) << c.name;
         // The emitters are seen: every case gathers light somewhere.
         EXPECT_GT(*std::max_element(dense.begin(), dense.end()), 0.05) << c.name;
     }

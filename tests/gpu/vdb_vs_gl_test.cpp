@@ -13,6 +13,7 @@
 #include "core/gpu_scene.h"
 #include "core/view.h"
 #include "support/test_scenes.h"
+#include "support/filter_precision.h"
 #include "vdb/sparse_cone.h"
 #include "voxelize/voxelize.h"
 
@@ -192,9 +193,10 @@ TEST(VdbVsGl, AoAndIndirectAgree) {
     std::printf("[vdb_vs_gl] %zu pixels: AO RMSE %.2e (max %.2e), indirect RMSE %.2e (image RMS %.4f, rel %.2e)\n", n,
                 aoRmse, aoMax, giRmse, giRms, giRmse / giRms);
     // Stated agreement (observed on llvmpipe: AO RMSE 4.6e-8, indirect 7e-5 of the image RMS):
-    // AO RMSE < 1e-3, indirect RMSE < 0.5% of the image's RMS.
-    EXPECT_LT(aoRmse, 1e-3);
-    EXPECT_LT(giRmse, 0.005 * giRms);
+    // AO RMSE < 1e-3, indirect RMSE < 0.5% of the image's RMS; on hardware texture filtering
+    // (support/filter_precision.h; an H200: 3.8e-3 and 0.32%) AO RMSE < 0.01, indirect 1%.
+    EXPECT_LT(aoRmse, vcttest::filterTolerance(1e-3, 0.01));
+    EXPECT_LT(giRmse, vcttest::filterTolerance(0.005, 0.01) * giRms);
 }
 
 struct Agreement {
@@ -263,7 +265,9 @@ TEST(VdbVsGl, DirectionalLevelsAndBouncesAgree) {
         std::printf("[vdb_vs_gl] aniso, %d bounce(s): AO RMSE %.2e, indirect RMSE %.2e (image RMS %.4f, rel %.2e), "
                     "mean ratio sparse / dense %.4f\n",
                     bounces, a.aoRmse, a.giRmse, a.giRms, a.giRmse / a.giRms, a.giMeanRatio);
-        EXPECT_LT(a.aoRmse, 2e-3) << bounces;
+        // Hardware texture filtering (support/filter_precision.h; an H200: AO 5.8e-3, indirect
+        // 0.39% of the image RMS) gets the product's bound, RMSE 0.01.
+        EXPECT_LT(a.aoRmse, vcttest::filterTolerance(2e-3, 0.01)) << bounces;
         EXPECT_LT(a.giRmse, 0.01 * a.giRms) << bounces;
         EXPECT_NEAR(a.giMeanRatio, 1.0, 0.005) << bounces;
     }
