@@ -1,7 +1,7 @@
 #!/bin/bash
 # The GPU checks of docs/gpu.md on a machine that has a GPU and its EGL driver but not
 # Debian's packages, from a bundle made on the build machine by scripts/portable_bundle.py
-# (vct, vct_tests_gpu, vct_tests_cli and bench_pareto, Sponza as a scene):
+# (vct, vct_tests_gpu, vct_tests_cli, vct_tests_stability and bench_pareto, Sponza as a scene):
 #
 #   scripts/gpu_check.sh BUNDLE.tar.xz OUT_DIR [--pareto]
 #
@@ -34,6 +34,9 @@ grep -E "^\[  (PASSED|FAILED|SKIPPED) " "$out/gpu_tests.log"
 stamp cli tests
 "$b/bin/vct_tests_cli" > "$out/cli_tests.log" 2>&1; echo "vct_tests_cli: exit $?"
 grep -E "^\[  (PASSED|FAILED|SKIPPED) " "$out/cli_tests.log"
+stamp stability tests
+"$b/bin/vct_tests_stability" > "$out/stability_tests.log" 2>&1; echo "vct_tests_stability: exit $?"
+grep -E "^\[  (PASSED|FAILED|SKIPPED) " "$out/stability_tests.log"
 if [ "$pareto" = --pareto ]; then
     stamp pareto
     "$b/bin/bench_pareto" --passes > "$out/pareto.txt" 2>"$out/pareto_progress.log"; echo "bench_pareto: exit $?"

@@ -94,10 +94,10 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
     ap.add_argument('build_dir')
     ap.add_argument('out')
-    ap.add_argument('--bin', action='append', help='program in BUILD_DIR (default: vct and the GPU and CLI tests)')
+    ap.add_argument('--bin', action='append', help='program in BUILD_DIR (default: vct and the GPU, CLI and stability tests)')
     ap.add_argument('--scene', action='append', default=[], help='a scene file to carry in bundle/scenes')
     a = ap.parse_args()
-    bins = a.bin or ['vct', 'vct_tests_gpu', 'vct_tests_cli']
+    bins = a.bin or ['vct', 'vct_tests_gpu', 'vct_tests_cli', 'vct_tests_stability']
     with tempfile.TemporaryDirectory() as work:
         root = os.path.join(work, 'bundle')
         for d in ('bin', 'lib', 'scenes'):
