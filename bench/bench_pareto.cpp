@@ -14,7 +14,8 @@
 //                [--vct "KEY=VALUE ..."]...   VCT variants to measure instead of the default
 //                ones (each a space-separated list of --param settings, and voxel-res=N for a
 //                grid other than --voxel-res's; "" is the defaults)
-//                [--passes]   also print each point's median time per pass
+//                [--passes]   also print each point's median time per pass (and, where the
+//                driver's timer queries work, the GPU time of its per-frame passes)
 //
 // AO alone fits its voxels to the visible points by default (vct.region=auto), and on Sponza
 // and the off-screen scene that region follows the camera, so the next frame voxelizes again
@@ -62,6 +63,7 @@ struct Point {
     std::string label;
     bool reference = false;  // a point of the reference's curve
     std::string passes;      // "name ms, ..." (median per pass)
+    std::string gpuFrame;    // ", GPU frame X ms" where every run had the per-frame passes' GPU time
     int spp = 0;
     double rmse = 0.0, frameMs = 0.0, timeMs = 0.0;
     bool frontFrame = false, frontTime = false;
@@ -273,7 +275,7 @@ int main(int argc, char** argv) {
             p.rmse = computeErrorMetrics(first.aovs.at(aov), truth, &valid).rmse;
             points.push_back(p);
         }
-        std::vector<std::vector<double>> totals(variants.size()), frames(variants.size());
+        std::vector<std::vector<double>> totals(variants.size()), frames(variants.size()), gpuFrames(variants.size());
         std::vector<std::map<std::string, std::vector<double>>> passTimes(variants.size());
         for (int run = 0; run < runs; ++run) {
             std::fprintf(stderr, "%s: timed round %d of %d\n", c.name.c_str(), run + 1, runs);
@@ -283,6 +285,7 @@ int main(int argc, char** argv) {
                 const RenderResult r = session.render(timed);
                 totals[v].push_back(r.totalMs);
                 frames[v].push_back(r.frameMs);
+                if (r.frameGpuMs) gpuFrames[v].push_back(*r.frameGpuMs);
                 for (const PassTiming& t : r.passes) passTimes[v][t.name].push_back(t.wallMs);
             }
         }
@@ -290,6 +293,11 @@ int main(int argc, char** argv) {
             Point& p = points[v];
             p.frameMs = medianOf(frames[v]);
             p.timeMs = medianOf(totals[v]);
+            if (gpuFrames[v].size() == frames[v].size()) {
+                char buf[64];
+                std::snprintf(buf, sizeof buf, "; GPU time of the per-frame passes %.2f", medianOf(gpuFrames[v]));
+                p.gpuFrame = buf;
+            }
             for (const auto& [name, t] : passTimes[v]) {
                 char buf[64];
                 std::snprintf(buf, sizeof buf, "%s%s %.1f", p.passes.empty() ? "" : ", ", name.c_str(), medianOf(t));
@@ -306,7 +314,7 @@ int main(int argc, char** argv) {
         for (const Point& p : points) {
             std::printf("%-30s %9.4f %11.1f %11.1f  %s %s\n", p.label.c_str(), p.rmse, p.frameMs, p.timeMs,
                         p.frontFrame ? "frame" : "     ", p.frontTime ? "cold" : "");
-            if (printPasses) std::printf("    passes (ms): %s\n", p.passes.c_str());
+            if (printPasses) std::printf("    passes (ms): %s%s\n", p.passes.c_str(), p.gpuFrame.c_str());
         }
         std::vector<Point> curve;
         for (const Point& p : points)

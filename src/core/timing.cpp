@@ -47,6 +47,18 @@ double PassTimer::totalMs() const {
     return s;
 }
 
+std::optional<double> PassTimer::frameGpuMs() const {
+    double s = 0;
+    bool any = false;
+    for (const auto& t : mTimings) {
+        if (t.reruns != Reruns::EveryFrame) continue;
+        if (!t.gpuMs) return std::nullopt;
+        s += *t.gpuMs;
+        any = true;
+    }
+    return any ? std::optional<double>(s) : std::nullopt;
+}
+
 double PassTimer::sceneStaticMs() const {
     double s = 0;
     for (const auto& t : mTimings)

@@ -62,6 +62,11 @@ public:
     const std::vector<PassTiming>& timings() const { return mTimings; }
     double totalMs() const;
     double sceneStaticMs() const;  // the passes that rerun only when the scene changes
+    // The GPU's own time for the passes that rerun every frame (timer queries, no glFinish
+    // stalls or CPU submission in it): what the frame costs a GPU that is kept busy. Empty
+    // where any such pass has no GPU time: the driver's queries read 0 (llvmpipe), or the
+    // pass ran on the CPU (the reference's rays), whose cost frame_ms alone holds.
+    std::optional<double> frameGpuMs() const;
 
 private:
     bool mGpuQueries;

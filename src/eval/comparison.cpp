@@ -301,7 +301,7 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
         say(v.kind + " " + v.label());
         const RenderRequest req = variantRequest(s.base, v);
         RenderResult first = session.render(req);  // warm-up; its image is the one scored
-        std::vector<double> totals, frames;
+        std::vector<double> totals, frames, gpuFrames;
         std::map<std::string, std::vector<double>> passTimes;
         for (int run = 0; run < s.timingRuns; ++run) {
             RenderRequest timed = req;
@@ -309,6 +309,7 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
             RenderResult r = session.render(timed);
             totals.push_back(r.totalMs);
             frames.push_back(r.frameMs);
+            if (r.frameGpuMs) gpuFrames.push_back(*r.frameGpuMs);
             for (const auto& p : r.passes) passTimes[p.name].push_back(p.wallMs);
         }
         const bool isAo = v.kind == "ao";
@@ -328,6 +329,9 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
         rec["params"] = v.params;
         rec["time_ms"] = medianOf(totals);   // cold: the scene's static data built anew
         rec["frame_ms"] = medianOf(frames);  // the same runs less what a static scene's next frame reuses
+        // The per-frame passes' GPU time, where every run had it (timer queries on a GPU).
+        const bool everyRunTimedOnGpu = !gpuFrames.empty() && gpuFrames.size() == frames.size();
+        rec["frame_gpu_ms"] = everyRunTimedOnGpu ? nlohmann::json(medianOf(gpuFrames)) : nlohmann::json(nullptr);
         nlohmann::json passes = nlohmann::json::object();
         for (const auto& [name, t] : passTimes) passes[name] = medianOf(t);
         rec["passes"] = passes;

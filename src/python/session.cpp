@@ -234,7 +234,8 @@ output_dir: where to write what `vct compare -o` writes (images, results.json,
     results.csv); None writes nothing.
 
 Returns the records, one dict per variant (label, kind, method, params, time_ms,
-frame_ms, passes, provenance, cost, rmse, mae, bias, max_abs, psnr, ssim, pixels, roi_rmse, nonroi_rmse, extra);
+frame_ms, frame_gpu_ms (None without GPU timer queries), passes, provenance, cost, rmse, mae, bias,
+max_abs, psnr, ssim, pixels, roi_rmse, nonroi_rmse, extra);
 a pandas DataFrame of them with dataframe=True; with full=True the whole results
 document (scene, camera, resolution, the reference's spp and standard errors,
 records). The comparison runs on its own renderer session over this session's scene.)doc")

@@ -234,6 +234,7 @@ RenderResult RenderSession::render(const RenderRequest& request) {
     }
     result.totalMs = nowMs() - start;
     result.frameMs = std::max(0.0, result.totalMs - timer.sceneStaticMs());
+    result.frameGpuMs = timer.frameGpuMs();
     result.passes = timer.timings();
     return result;
 }
@@ -250,6 +251,7 @@ nlohmann::json statsJson(const RenderResult& result, const RenderRequest& reques
     }
     j["total_ms"] = result.totalMs;
     j["frame_ms"] = result.frameMs;
+    j["frame_gpu_ms"] = result.frameGpuMs ? nlohmann::json(*result.frameGpuMs) : nlohmann::json(nullptr);
     j["width"] = request.width;
     j["height"] = request.height;
     j["gl_renderer"] = info.renderer;

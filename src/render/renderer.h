@@ -29,6 +29,8 @@ struct RenderResult {
     // injection, bounces, mips, shadow maps, the reference's BVH; core/timing.h): what the
     // next frame of the same static scene costs.
     double frameMs = 0.0;
+    // The GPU time of the per-frame passes where every one has it (PassTimer::frameGpuMs).
+    std::optional<double> frameGpuMs;
     nlohmann::json extra = nlohmann::json::object();  // method statistics (rays, voxel memory, ...)
     // --param keys nobody read: not in this render, nor with the same value and methods in an
     // earlier render of the session whose cached state (a voxel grid) this one reused.

@@ -97,6 +97,18 @@ TEST(RenderCli, PngIsWrittenAndStatsHaveTheContractFields) {
         EXPECT_GE(p["wall_ms"].get<double>(), 0.0);
         EXPECT_TRUE(p.contains("gpu_ms"));
     }
+    // The per-frame passes' GPU time: a number where every one has gpu_ms, else null.
+    ASSERT_TRUE(j.contains("frame_gpu_ms"));
+    bool allTimed = false;
+    double gpuSum = 0.0;
+    for (const auto& p : j["passes"])
+        if (p["reruns"] == "every_frame") {
+            allTimed = !p["gpu_ms"].is_null();
+            if (!allTimed) break;
+            gpuSum += p["gpu_ms"].get<double>();
+        }
+    if (allTimed) EXPECT_NEAR(j["frame_gpu_ms"].get<double>(), gpuSum, 1e-9);
+    else EXPECT_TRUE(j["frame_gpu_ms"].is_null());
     for (const auto& s : j["passes_skipped"]) {
         EXPECT_TRUE(s.contains("pass"));
         EXPECT_FALSE(s["reason"].get<std::string>().empty());

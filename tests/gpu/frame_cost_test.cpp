@@ -94,6 +94,18 @@ TEST(FrameCost, WhatTheNextFrameReusesIsWhatFrameMsLeavesOut) {
             EXPECT_TRUE(warmPasses.count(name)) << what << ": " << name << " is per-frame but did not rerun";
         EXPECT_GT(cold.frameMs, 0.0);
         EXPECT_NEAR(cold.frameMs, cold.totalMs - staticMs, 1e-9);
+        // The per-frame passes' GPU time: none where the timer queries read 0 (llvmpipe) or a
+        // per-frame pass runs on the CPU (the reference's and the denoised tracers' rays);
+        // elsewhere at most the wall clock of the same passes, which waits for the GPU.
+        const bool cpuRays = c.ao == "reference" || c.ao == "rtao-denoised";
+        if (!GlContext::shared().info().gpuTimerQueries || cpuRays) {
+            EXPECT_FALSE(cold.frameGpuMs.has_value()) << what;
+            EXPECT_FALSE(warm.frameGpuMs.has_value()) << what;
+        } else {
+            ASSERT_TRUE(warm.frameGpuMs.has_value()) << what;
+            EXPECT_GT(*warm.frameGpuMs, 0.0) << what;
+            EXPECT_LE(*warm.frameGpuMs, warm.frameMs) << what;
+        }
         const bool follows = c.ao == "vct" && cold.extra["voxels"]["region"]["follows_view"].get<bool>();
         EXPECT_EQ(follows, c.scene == "open_plane" && c.gi == "none" && c.region.empty()) << what;
         if (c.ao == "vct" || c.ao == "reference") {
@@ -123,6 +135,13 @@ TEST(FrameCost, CompareReportsBothCostsAndProvenance) {
         const double t = rec["time_ms"].get<double>(), f = rec["frame_ms"].get<double>();
         EXPECT_GT(f, 0.0) << rec["label"];
         EXPECT_LE(f, t) << rec["label"];
+        // The GPU time of the per-frame passes: null without timer queries (llvmpipe) and for
+        // the CPU's rays, at most frame_ms elsewhere.
+        ASSERT_TRUE(rec.contains("frame_gpu_ms")) << rec["label"];
+        if (!GlContext::shared().info().gpuTimerQueries || rec["method"] == "rtao-denoised")
+            EXPECT_TRUE(rec["frame_gpu_ms"].is_null()) << rec["label"];
+        else
+            EXPECT_LE(rec["frame_gpu_ms"].get<double>(), f) << rec["label"];
         // The timed runs draw their G-buffer, as a new view does: the reference's times hold
         // its primary rays, the rasterizing methods' their raster.
         EXPECT_TRUE(rec["passes"].contains("gbuffer")) << rec["label"] << rec["passes"].dump();
