@@ -21,6 +21,17 @@ struct PassTiming {
     Reruns reruns = Reruns::EveryFrame;
 };
 
+// Program builds (compile, link, the limits check: gl/program_cache.h) happen the first time
+// a pass uses a program, a one-off cost of the process rather than of the pass or of the next
+// frame. The cache adds each build's wall time here (per thread: a pass and the builds it
+// triggers run on one); a timed scope leaves out what was built inside it, and a render
+// reports the builds between its start and end (RenderResult::programBuildMs). GPU times are
+// left as measured: the GPU may wait idle inside them while a program is built. What a
+// driver compiles at a program's first draw or dispatch (llvmpipe's JIT) is not seen here
+// and stays in that pass.
+void addProgramBuildMs(double ms);
+double programBuildMsSoFar();  // this thread's total
+
 class PassTimer {
 public:
     explicit PassTimer(bool gpuQueries = false) : mGpuQueries(gpuQueries) {}
@@ -38,6 +49,7 @@ public:
         Reruns mReruns;
         unsigned mQuery = 0;
         double mStart = 0.0;
+        double mBuildAtStart = 0.0;  // programBuildMsSoFar() when the scope began
     };
     // gl = true: glFinish before reading the clock at both ends (GPU work is synchronous to it).
     Scope scope(const std::string& name, bool gl = true, Reruns reruns = Reruns::EveryFrame) {

@@ -1,5 +1,6 @@
 #include "gl/program_cache.h"
 
+#include "core/timing.h"
 #include "gl/program_limits.h"
 
 #include <cstdio>
@@ -85,7 +86,10 @@ GLuint cachedProgram(const ProgramKey& key) {
     if (it != c.programs.end()) return it->second.id();
     c.compiles[id]++;
     logCompiled(id);
-    return c.programs.emplace(id, build(key)).first->second.id();
+    const double start = nowMs();
+    GlProgram program = build(key);
+    addProgramBuildMs(nowMs() - start);
+    return c.programs.emplace(id, std::move(program)).first->second.id();
 }
 
 const std::map<std::string, int>& programCompileCounts() { return cache().compiles; }

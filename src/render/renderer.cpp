@@ -137,7 +137,7 @@ RenderResult RenderSession::render(const RenderRequest& request) {
     const RenderPlan& plan = result.plan;
     const ActiveMethods active = activeMethods(request);
     PassTimer timer(gl.info().gpuTimerQueries);
-    const double start = nowMs();
+    const double start = nowMs(), builtBefore = programBuildMsSoFar();
     const View view = makeView(request.camera, request.width, request.height);
 
     // G-buffer: shared across renders of the same view that reuse what they can.
@@ -233,7 +233,8 @@ RenderResult RenderSession::render(const RenderRequest& request) {
         else if (!mImpl->paramsRead.count(read)) result.unusedParams.push_back(key);
     }
     result.totalMs = nowMs() - start;
-    result.frameMs = std::max(0.0, result.totalMs - timer.sceneStaticMs());
+    result.programBuildMs = programBuildMsSoFar() - builtBefore;
+    result.frameMs = std::max(0.0, result.totalMs - timer.sceneStaticMs() - result.programBuildMs);
     result.frameGpuMs = timer.frameGpuMs();
     result.passes = timer.timings();
     return result;
@@ -251,6 +252,7 @@ nlohmann::json statsJson(const RenderResult& result, const RenderRequest& reques
     }
     j["total_ms"] = result.totalMs;
     j["frame_ms"] = result.frameMs;
+    j["program_build_ms"] = result.programBuildMs;
     j["frame_gpu_ms"] = result.frameGpuMs ? nlohmann::json(*result.frameGpuMs) : nlohmann::json(nullptr);
     j["width"] = request.width;
     j["height"] = request.height;

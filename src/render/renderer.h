@@ -31,6 +31,9 @@ struct RenderResult {
     double frameMs = 0.0;
     // The GPU time of the per-frame passes where every one has it (PassTimer::frameGpuMs).
     std::optional<double> frameGpuMs;
+    // Wall time of the programs this render built (their first use in the process): in
+    // totalMs, not in its passes' times nor in frameMs.
+    double programBuildMs = 0.0;
     nlohmann::json extra = nlohmann::json::object();  // method statistics (rays, voxel memory, ...)
     // --param keys nobody read: not in this render, nor with the same value and methods in an
     // earlier render of the session whose cached state (a voxel grid) this one reused.

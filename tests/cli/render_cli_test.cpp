@@ -97,6 +97,17 @@ TEST(RenderCli, PngIsWrittenAndStatsHaveTheContractFields) {
         EXPECT_GE(p["wall_ms"].get<double>(), 0.0);
         EXPECT_TRUE(p.contains("gpu_ms"));
     }
+    // A fresh process builds the programs its passes use: their time is in total_ms, not in
+    // the passes' nor in frame_ms, which is total_ms less the scene's static passes and them.
+    const double buildMs = j["program_build_ms"].get<double>();
+    EXPECT_GT(buildMs, 0.0);
+    double staticMs = 0.0, passMs = 0.0;
+    for (const auto& p : j["passes"]) {
+        passMs += p["wall_ms"].get<double>();
+        if (p["reruns"] == "when_scene_changes") staticMs += p["wall_ms"].get<double>();
+    }
+    EXPECT_NEAR(j["frame_ms"].get<double>(), j["total_ms"].get<double>() - staticMs - buildMs, 1e-6);
+    EXPECT_LE(passMs + buildMs, j["total_ms"].get<double>() + 1e-6);
     // The per-frame passes' GPU time: a number where every one has gpu_ms, else null.
     ASSERT_TRUE(j.contains("frame_gpu_ms"));
     bool allTimed = false;

@@ -1,5 +1,5 @@
 // PassTimer::frameGpuMs: the GPU time of the passes a static scene's next frame reruns,
-// defined only where every such pass has one.
+// defined only where every such pass has one; and program builds left out of the passes.
 #include "core/timing.h"
 
 #include <gtest/gtest.h>
@@ -41,4 +41,22 @@ TEST(FrameGpuTime, EmptyWhereAPerFramePassHasNoGpuTime) {
     ASSERT_TRUE(staticOnly.frameGpuMs().has_value());
     EXPECT_DOUBLE_EQ(*staticOnly.frameGpuMs(), 2.0);
     EXPECT_FALSE(PassTimer().frameGpuMs().has_value());
+}
+
+// A program built inside a timed scope is the process's one-off cost: the scope's wall time
+// leaves it out, and programBuildMsSoFar() holds it.
+TEST(ProgramBuildTime, ATimedScopeLeavesOutTheProgramsBuiltInIt) {
+    PassTimer timer;
+    const double before = programBuildMsSoFar();
+    {
+        auto scope = timer.scope("pass", false);
+        const double start = nowMs();
+        while (nowMs() - start < 30.0) {
+        }
+        addProgramBuildMs(25.0);  // as the program cache reports a build of 25 ms
+    }
+    EXPECT_DOUBLE_EQ(programBuildMsSoFar() - before, 25.0);
+    ASSERT_EQ(timer.timings().size(), 1u);
+    EXPECT_GE(timer.timings()[0].wallMs, 4.9);  // 30 ms waited, 25 of them "building"
+    EXPECT_LT(timer.timings()[0].wallMs, 20.0);
 }
