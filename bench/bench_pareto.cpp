@@ -16,6 +16,9 @@
 //                grid other than --voxel-res's; "" is the defaults)
 //                [--passes]   also print each point's median time per pass (and, where the
 //                driver's timer queries work, the GPU time of its per-frame passes)
+// Where the timer queries work, the equal-error table also gives the reference's frame over
+// VCT's per-frame GPU time ("GPU time"): VCT's frame on a GPU kept busy, without the glFinish
+// each timed pass ends in.
 //
 // AO alone fits its voxels to the visible points by default (vct.region=auto), and on Sponza
 // and the off-screen scene that region follows the camera, so the next frame voxelizes again
@@ -43,6 +46,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -63,7 +67,8 @@ struct Point {
     std::string label;
     bool reference = false;  // a point of the reference's curve
     std::string passes;      // "name ms, ..." (median per pass)
-    std::string gpuFrame;    // ", GPU frame X ms" where every run had the per-frame passes' GPU time
+    // The per-frame passes' GPU time (median), where every timed run had it.
+    std::optional<double> gpuFrameMs;
     int spp = 0;
     double rmse = 0.0, frameMs = 0.0, timeMs = 0.0;
     bool frontFrame = false, frontTime = false;
@@ -293,11 +298,7 @@ int main(int argc, char** argv) {
             Point& p = points[v];
             p.frameMs = medianOf(frames[v]);
             p.timeMs = medianOf(totals[v]);
-            if (gpuFrames[v].size() == frames[v].size()) {
-                char buf[64];
-                std::snprintf(buf, sizeof buf, "; GPU time of the per-frame passes %.2f", medianOf(gpuFrames[v]));
-                p.gpuFrame = buf;
-            }
+            if (gpuFrames[v].size() == frames[v].size()) p.gpuFrameMs = medianOf(gpuFrames[v]);
             for (const auto& [name, t] : passTimes[v]) {
                 char buf[64];
                 std::snprintf(buf, sizeof buf, "%s%s %.1f", p.passes.empty() ? "" : ", ", name.c_str(), medianOf(t));
@@ -314,7 +315,11 @@ int main(int argc, char** argv) {
         for (const Point& p : points) {
             std::printf("%-30s %9.4f %11.1f %11.1f  %s %s\n", p.label.c_str(), p.rmse, p.frameMs, p.timeMs,
                         p.frontFrame ? "frame" : "     ", p.frontTime ? "cold" : "");
-            if (printPasses) std::printf("    passes (ms): %s%s\n", p.passes.c_str(), p.gpuFrame.c_str());
+            if (printPasses) {
+                std::printf("    passes (ms): %s", p.passes.c_str());
+                if (p.gpuFrameMs) std::printf("; GPU time of the per-frame passes %.2f", *p.gpuFrameMs);
+                std::printf("\n");
+            }
         }
         std::vector<Point> curve;
         for (const Point& p : points)
@@ -327,10 +332,14 @@ int main(int argc, char** argv) {
             bool extraFrame = false, extraTime = false;
             const double refFrame = referenceCostAt(curve, p.rmse, &Point::frameMs, extraFrame);
             const double refTime = referenceCostAt(curve, p.rmse, &Point::timeMs, extraTime);
-            std::printf("%-30s %9.4f %13.1f %13.1f %9.2f %9.2f%s%s\n", p.label.c_str(), p.rmse, refFrame, refTime,
+            std::printf("%-30s %9.4f %13.1f %13.1f %9.2f %9.2f%s%s", p.label.c_str(), p.rmse, refFrame, refTime,
                         refFrame / p.frameMs, refTime / p.timeMs,
                         p.rmse >= curve.front().rmse ? "  (the reference at 1 spp is as accurate)" : "",
                         extraFrame ? "  (beyond the largest spp: extrapolated)" : "");
+            // On a GPU: the reference's frame over VCT's per-frame GPU time, VCT's cost on a
+            // GPU kept busy (no glFinish after every pass).
+            if (p.gpuFrameMs && *p.gpuFrameMs > 0.0) std::printf("  (GPU time: %.2f)", refFrame / *p.gpuFrameMs);
+            std::printf("\n");
         }
     }
     return 0;
