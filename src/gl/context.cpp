@@ -107,9 +107,10 @@ GlContext::GlContext(GlDevice device) : mImpl(std::make_unique<Impl>()) {
     mInfo.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     mInfo.version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
     mInfo.vendor = reinterpret_cast<const char*>(glGetString(GL_VENDOR));
+    mInfo.softwareRenderer = mInfo.renderer.find("llvmpipe") != std::string::npos ||
+                             mInfo.renderer.find("softpipe") != std::string::npos;
     // llvmpipe's GL_TIME_ELAPSED queries read 0: report GPU times only on real hardware.
-    mInfo.gpuTimerQueries = mInfo.renderer.find("llvmpipe") == std::string::npos &&
-                            mInfo.renderer.find("softpipe") == std::string::npos;
+    mInfo.gpuTimerQueries = !mInfo.softwareRenderer;
 
     gLiveContexts++;
     glEnable(GL_DEBUG_OUTPUT);

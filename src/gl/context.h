@@ -17,7 +17,8 @@ struct GlContextInfo {
     std::string version;
     std::string vendor;
     std::string platform;  // "surfaceless" or "device"
-    bool gpuTimerQueries = false;  // false where GL_TIME_ELAPSED reads 0 (llvmpipe)
+    bool softwareRenderer = false;  // Mesa's llvmpipe or softpipe: the CPU rasterizes and filters in float
+    bool gpuTimerQueries = false;   // false where GL_TIME_ELAPSED reads 0 (the software renderers)
 };
 
 class GlContext {
