@@ -16,12 +16,15 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <exception>
 #include <iomanip>
 #include <sstream>
 
 using namespace vct;
 
-int main(int argc, char** argv) {
+namespace {
+
+int run(int argc, char** argv) {
     CLI::App app{"VCT convergence on closed-form AO cases"};
     std::string resList = "32,64,128,256", backend = "gl", filter, markdown;
     bool detail = false, gi = false;
@@ -94,4 +97,17 @@ int main(int argc, char** argv) {
     md << "\n" << passing << " of " << cases << " cases converge.\n";
     if (!markdown.empty()) writeTextFileAtomic(markdown, md.str());
     return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    // A bad --param (out of range, too many lanes) or an unreadable input ends with its message
+    // and exit status 1, not an uncaught exception.
+    try {
+        return run(argc, argv);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "bench_convergence: %s\n", e.what());
+        return 1;
+    }
 }

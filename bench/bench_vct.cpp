@@ -142,6 +142,9 @@ CountedPass countConeFetches(bool gi, const VoxelGrid& grid, const GBuffer& gbuf
     const float diagonal = glm::length(glm::vec3(grid.resolution)) * grid.voxelSize;
     conedetail::BoundConePass bound =
         conedetail::bindConePass(gi, grid, gbuffer, gi ? 2.f * diagonal : radius, sky, readConeSettings(params));
+    if (bound.slices.count() > 1)
+        throw UsageError("the fetch count marches all cones in one dispatch; these settings need " +
+                         std::to_string(bound.slices.count()) + " (CONE_LOOP_BUDGET)");
     const GLuint program = cachedProgram(coneCountProgramKey(gi, bound.directional, bound.depthLevels));
     CountedPass out;
     GlTexture value = createTexture2D(GL_RGBA32F, gbuffer.width, gbuffer.height);

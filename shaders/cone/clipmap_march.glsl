@@ -93,8 +93,8 @@ float cone_volumeFacing(vec3 p, vec3 d, float lod, vec4 s) { return 1.0; }
 // As cone_gather (cone_march.glsl). The start offset is in voxels of the level the surface
 // point itself falls in (continuously across the blend bands), so a point near a level
 // border does not occlude itself with that coarser level's voxels.
-ConeGather cone_gather(vec3 pWorld, vec3 n, vec3 ng, float maxDist, float falloff, float sky) {
+ConeGather cone_gather(ConeGather g, vec3 pWorld, vec3 n, vec3 ng, float maxDist, float falloff, float sky) {
     vec3 p = (u.voxelFromWorld * vec4(pWorld, 1.0)).xyz;
     float offset = u.march.z * exp2(clip_positionLod(p));
-    return cone_gatherVoxel(p, n, ng, offset, offset, maxDist, falloff, sky);
+    return cone_gatherVoxel(g, p, n, ng, offset, offset, maxDist, falloff, sky);
 }

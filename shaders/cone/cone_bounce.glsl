@@ -77,7 +77,9 @@ void main() {
     // cones the pixel offset beyond the farthest case, and measure the plane limit's height
     // from there, so a voxel never gathers its own surface.
     float offset = u.march.z;
-    ConeGather g = cone_gatherVoxel(vec3(v) + 0.5, n, n, offset + 0.5, offset, u.limits.x, 0.0, u.limits.y);
+    ConeGather g = cone_gatherVoxel(cone_gatherStart(i), vec3(v) + 0.5, n, n, offset + 0.5, offset, u.limits.x, 0.0,
+                                    u.limits.y);
+    cone_gatherCarry(i, g);
     vec3 albedo = texelFetch(bounce_albedo, v, 0).rgb;
     vec3 L = min(direct.rgb / direct.a + albedo * g.radiance, vec3(RADIANCE_MAX));
     imageStore(bounce_out, v, vec4(L * direct.a, direct.a));

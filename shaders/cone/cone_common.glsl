@@ -60,11 +60,44 @@ void cone_jitterPixel(ivec2 pix) {
     if (u.image.z != 0) cone_rotation = cone_jitterAngle(uint(pix.x), uint(pix.y), uint(u.image.w));
 }
 
-// The gather from voxel-space point p (the surface point, or a voxel centre for bounces);
-// the cones start `offset` voxels along ng, and `h0` is that start's height above the
-// tangent plane for the plane limit.
-ConeGather cone_gatherVoxel(vec3 p, vec3 n, vec3 ng, float offset, float h0, float maxDist, float falloff,
-                            float sky) {
+// A gather split over dispatches (CONE_LOOP_BUDGET, cone_shared.h): each dispatch marches a
+// slice of the cone set (u.cones holds it) and leaves its running sums in cone_carried[slot]
+// for the next, which adds its own cones to them: the sums one dispatch would have made, in
+// its order, to the bit. `slot` is the pixel (pixel passes) or the list entry (bounces).
+struct ConeCarried {
+    vec4 light;   // (radiance, occlusion) summed so far
+    vec4 counts;  // (samples, fetches, 0, 0) so far
+};
+layout(std430, binding = CONE_BINDING_CARRY) buffer ConeCarry { ConeCarried cone_carried[]; };
+
+// The sums a gather starts from: zero, or what the previous dispatch carried (its fetches
+// into cone_fetches).
+ConeGather cone_gatherStart(uint slot) {
+    ConeGather g;
+    g.radiance = vec3(0.0);
+    g.occlusion = 0.0;
+    g.samples = 0.0;
+    if ((u.trace.w & CONE_SPLIT_RESUME) != 0) {
+        ConeCarried c = cone_carried[slot];
+        g.radiance = c.light.xyz;
+        g.occlusion = c.light.w;
+        g.samples = c.counts.x;
+        cone_fetches = c.counts.y;
+    }
+    return g;
+}
+
+// Leaves the gather's sums for the next dispatch when one follows.
+void cone_gatherCarry(uint slot, ConeGather g) {
+    if ((u.trace.w & CONE_SPLIT_CARRY) != 0)
+        cone_carried[slot] = ConeCarried(vec4(g.radiance, g.occlusion), vec4(g.samples, cone_fetches, 0.0, 0.0));
+}
+
+// The gather from voxel-space point p (the surface point, or a voxel centre for bounces) of
+// this dispatch's cones, added to `g` (cone_gatherStart); the cones start `offset` voxels
+// along ng, and `h0` is that start's height above the tangent plane for the plane limit.
+ConeGather cone_gatherVoxel(ConeGather g, vec3 p, vec3 n, vec3 ng, float offset, float h0, float maxDist,
+                            float falloff, float sky) {
     mat3 frame = frame_fromZ(n);
     if (cone_rotation != 0.0) {
         float c = cos(cone_rotation), s = sin(cone_rotation);
@@ -72,10 +105,6 @@ ConeGather cone_gatherVoxel(vec3 p, vec3 n, vec3 ng, float offset, float h0, flo
     }
     ConeMarch m = cone_uniformMarch();
     vec3 origin = p + ng * offset;
-    ConeGather g;
-    g.radiance = vec3(0.0);
-    g.occlusion = 0.0;
-    g.samples = 0.0;
     for (int c = 0; c < u.config.x; ++c) {
         vec4 cone = u.cones[c];
         vec3 d = normalize(frame * cone.xyz);

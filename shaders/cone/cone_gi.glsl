@@ -24,7 +24,9 @@ layout(std430, binding = CONE_BINDING_COUNTS) buffer ConeCounts { vec2 cone_coun
 vec4 cone_passTrace(ivec2 pix, vec3 p, vec3 n, vec3 ng, out vec2 counts) {
     cone_jitterPixel(pix);
     cone_fetches = 0.0;
-    ConeGather g = cone_gather(p, n, ng, u.limits.x, 0.0, u.limits.y);
+    uint slot = uint(pix.y) * uint(u.image.x) + uint(pix.x);
+    ConeGather g = cone_gather(cone_gatherStart(slot), p, n, ng, u.limits.x, 0.0, u.limits.y);
+    cone_gatherCarry(slot, g);
     counts = vec2(g.samples, cone_fetches);
     return vec4(g.radiance, 1.0);
 }

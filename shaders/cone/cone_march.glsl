@@ -117,8 +117,8 @@ float cone_volumeFacing(vec3 p, vec3 d, float lod, vec4 s) {
 #endif
 }
 
-ConeGather cone_gather(vec3 pWorld, vec3 n, vec3 ng, float maxDist, float falloff, float sky) {
+ConeGather cone_gather(ConeGather g, vec3 pWorld, vec3 n, vec3 ng, float maxDist, float falloff, float sky) {
     // voxelFromWorld is a uniform scale plus a translation: directions keep their length.
     vec3 p = (u.voxelFromWorld * vec4(pWorld, 1.0)).xyz;
-    return cone_gatherVoxel(p, n, ng, u.march.z, u.march.z, maxDist, falloff, sky);
+    return cone_gatherVoxel(g, p, n, ng, u.march.z, u.march.z, maxDist, falloff, sky);
 }

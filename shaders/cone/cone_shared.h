@@ -18,9 +18,22 @@ VCT_BEGIN_NAMESPACE
 // voxels (texture cache on a GPU, SIMD lanes on llvmpipe).
 VCT_CONST int CONE_LOCAL_SIZE = 8;
 
-// Cones per march after splitting into lanes (src/cone/cone_set.h): 512 vec4 = 8 KiB of the
-// uniform block, half of the 16 KiB GL 4.5 guarantees.
-VCT_CONST int CONE_MAX_CONES = 512;
+// Cones per march after splitting into lanes (src/cone/cone_set.h). A pass whose cones do not
+// fit one dispatch marches them over several (CONE_LOOP_BUDGET), so this bounds cost, not the
+// uniform block: 64 lanes of the 64-cone set, or 256 lanes (auto at 512^3) of the 16-cone one.
+VCT_CONST int CONE_MAX_CONES = 4096;
+// Cones in the uniform block: the slice of the set one dispatch marches. 512 vec4 = 8 KiB,
+// half of the 16 KiB GL 4.5 guarantees.
+VCT_CONST int CONE_BLOCK_CONES = 512;
+// Loop iterations one invocation may run before the driver ends its loops. llvmpipe counts
+// every loop iteration of an invocation, all loops together, and leaves every loop once the
+// count reaches 65535 (gallivm's LP_MAX_TGSI_LOOP_ITERATIONS): silently, with whatever the
+// sums hold then. 16 cones x 62 lanes of about 100 steps gave AO 0.13 off the sparse path's
+// value that way. A pass marches as many cones per dispatch as its bound on a cone's loop
+// iterations (coneLoopBound, src/cone/cone_budget.h) lets fit this budget, and carries each
+// gather's sums to the next dispatch (cone_common.glsl): the same sums in the same order as
+// one dispatch. 5535 below the limit for the passes' other loops.
+VCT_CONST int CONE_LOOP_BUDGET = 60000;
 // vct.lanes = auto: one lane per cone at 32^3, (res / 32)^2 lanes above, so a lane's
 // footprint at R spans the same number of voxels at every resolution (4.6 voxels for a
 // 60-degree cone at R = 4 voxels, i.e. R = 1/8 of a 32^3 grid).
@@ -39,6 +52,14 @@ VCT_CONST int CONE_UNIT_BOUNCE_ALBEDO = 20;  // cone_bounce.glsl: grid.albedo
 VCT_CONST int CONE_UNIT_BOUNCE_EMISSION = 21;  // cone_bounce.glsl: grid.emission (BOUNCE_EMITTED)
 VCT_CONST int CONE_IMAGE_OUTPUT = 0;    // image unit of the output texture
 VCT_CONST int CONE_UBO_BINDING = 0;
+// A gather split over dispatches: its running sums per pixel (or listed voxel), read by the
+// next dispatch. Binding 5 is a scene buffer's (scene_shared.h) in the passes that read the
+// scene; the cone passes read none.
+VCT_CONST int CONE_BINDING_CARRY = 5;
+// ConeUniforms::trace.w, split gathers: this dispatch resumes the sums a previous one carried,
+// and carries its own on to a next one.
+VCT_CONST int CONE_SPLIT_RESUME = 1;
+VCT_CONST int CONE_SPLIT_CARRY = 2;
 VCT_CONST int CONE_BINDING_COUNTS = 6;      // cone_ao/gi.glsl: per-pixel (samples, fetches)
 VCT_CONST int CONE_BINDING_VOXEL_LIST = 7;  // cone_bounce.glsl: SSBO of the voxels that gather
 VCT_CONST int CONE_BOUNCE_GROUP = 64;       // cone_bounce.glsl: invocations per group over the list
@@ -133,11 +154,12 @@ struct ConeUniforms {
                            // w = plane-limit ratio (0 = off)
     vec4 camera;           // x = tan(yfov / 2) * aspect, y = tan(yfov / 2), z = ray step (voxels),
                            // w unused (optical-depth levels are the CONE_DEPTH_LEVELS variant)
-    ivec4 config;          // x = cone count, y = AO mapping, z = mip level (rayMarch), w = channel (rayMarch)
+    ivec4 config;          // x = cones in this dispatch (cones[0, x)), y = AO mapping, z = mip level (rayMarch), w = channel (rayMarch)
     ivec4 image;           // x = width, y = height, z = cone jitter (1: rotate per pixel), w = its seed
     ivec4 trace;           // pixel passes: x = trace scale (vct.trace-scale), y = stage (CONE_STAGE_*),
-                           // z = the own stage's first list entry (dispatches of at most 65535 groups)
-    vec4 cones[CONE_MAX_CONES];  // xyz = direction in the tangent frame (z = normal), w = weight
+                           // z = the own stage's first list entry (dispatches of at most 65535 groups),
+                           // w = split gathers (CONE_SPLIT_RESUME | CONE_SPLIT_CARRY; 0 = whole)
+    vec4 cones[CONE_BLOCK_CONES];  // xyz = direction in the tangent frame (z = normal), w = weight
 };
 
 // Weights of the three directional textures a cone of unit direction d blends: d^2 sums to

@@ -56,7 +56,10 @@ GlTexture traceClipmap(bool gi, const Clipmap& cm, const GBuffer& gbuffer, float
         const VoxelGrid& g = cm.levels[size_t(l)];
         glBindTextureUnit(GLuint(gpu::CLIPMAP_UNIT_LEVEL0 + l), gi ? g.radiance.id() : g.opacity.id());
     }
-    GlTexture out = dispatchPixelPass(program, gi, gbuffer, counts, ubo.id(), settings.traceScale);
+    // Per step: the march and its plane-limit search (denseLoopsPerStep), and the level
+    // search over the clipmap's levels (clip_positionLod) for each of the step's two lods.
+    const ConeSlices slices = coneSlices(u, settings, denseLoopsPerStep(settings) + 2 * (layout.levelCount - 1));
+    GlTexture out = dispatchPixelPass(program, gi, gbuffer, counts, ubo.id(), settings.traceScale, slices);
     for (int l = 0; l < layout.levelCount; ++l) glBindTextureUnit(GLuint(gpu::CLIPMAP_UNIT_LEVEL0 + l), 0);
     return out;
 }

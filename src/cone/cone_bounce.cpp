@@ -112,7 +112,8 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
     for (int i = 0; i < gathers; ++i) {
         // The mips (and the directional textures, rebuilt anew) of the previous total.
         buildMips(grid, cone.anisotropic, mipsTimer, "bounce_mips", wantsDepthLevels(cone));
-        ubo = bindConeUniforms(coneUniforms(true, grid, 2.f * diagonal, bounceSky ? sky : 0.f, cone));
+        const gpu::ConeUniforms uniforms = coneUniforms(true, grid, 2.f * diagonal, bounceSky ? sky : 0.f, cone);
+        ubo = bindConeUniforms(uniforms);
         const ConeDirectional directional = bindGridTextures(true, grid, cone);
         const bool aniso = directional != ConeDirectional::None, depth = readsDepthLevels(grid, directional);
         glBindTextureUnit(gpu::CONE_UNIT_BOUNCE_DIRECT, direct.id());
@@ -135,11 +136,22 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
                            res.z);
         bindImage3D(gpu::CONE_IMAGE_OUTPUT, next.id(), 0, GL_WRITE_ONLY, format);
         glUseProgram(cachedProgram(coneBounceProgramKey(aniso, format, BouncePass::Gather, depth)));
+        // The cone set over the loop budget's dispatches (coneSlices), the sums of a slab's
+        // listed voxels carried between them.
+        const ConeSlices coneSet = coneSlices(uniforms, cone, denseLoopsPerStep(cone));
+        uint32_t mostListed = 0;
+        for (const Slab& slab : slabs) mostListed = std::max(mostListed, slab.listed);
+        GlBuffer carry = bindConeCarry(coneSet, mostListed);
         for (const Slab& slab : slabs) {
             if (slab.listed == 0) continue;
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_VOXEL_LIST, slab.list.id());
-            glDispatchCompute(groupCount(int(slab.listed), gpu::CONE_BOUNCE_GROUP), 1, 1);
+            for (int k = 0; k < coneSet.count(); ++k) {
+                loadConeSlice(ubo.id(), coneSet, k);
+                glDispatchCompute(groupCount(int(slab.listed), gpu::CONE_BOUNCE_GROUP), 1, 1);
+                if (k + 1 < coneSet.count()) glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+            }
         }
+        if (carry) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_CARRY, 0);
         glMemoryBarrier(GL_ALL_BARRIER_BITS);
         glCopyImageSubData(next.id(), GL_TEXTURE_3D, 0, 0, 0, 0, grid.radiance.id(), GL_TEXTURE_3D, 0, 0, 0, 0, res.x,
                            res.y, res.z);

@@ -1,5 +1,6 @@
 #include "cone/cone_gpu.h"
 
+#include "cone/cone_budget.h"
 #include "cone/cone_set.h"
 #include "core/errors.h"
 #include "gl/readback.h"
@@ -56,12 +57,45 @@ gpu::ConeUniforms coneUniforms(bool gi, const VoxelGrid& grid, float maxDistWorl
                               ? gpu::CONE_FALLOFF_LAMBDA_R / maxDist
                               : 0.f;
     u.limits = glm::vec4(maxDist, sky, falloff, settings.planeLimit ? gpu::CONE_PLANE_LIMIT_RATIO : 0.f);
-    const std::vector<glm::vec4>& cones = lanes.cones;
-    u.config = glm::ivec4(int(cones.size()), gi ? gpu::CONE_AO_LINEAR : int(settings.aoMapping), 0, 0);
-    for (size_t i = 0; i < cones.size(); ++i) u.cones[i] = cones[i];
+    // The first slice's cones (coneSlices); a pass of several loads the others (loadConeSlice).
+    const size_t first = std::min(lanes.cones.size(), size_t(gpu::CONE_BLOCK_CONES));
+    u.config = glm::ivec4(int(first), gi ? gpu::CONE_AO_LINEAR : int(settings.aoMapping), 0, 0);
+    for (size_t i = 0; i < first; ++i) u.cones[i] = lanes.cones[i];
     u.trace = glm::ivec4(settings.traceScale, gpu::CONE_STAGE_TRACE, 0, 0);
     return u;
 }
+
+ConeSlices coneSlices(const gpu::ConeUniforms& u, const ConeSettings& settings, int loopsPerStep) {
+    const glm::vec3 res = glm::vec3(u.gridResolution);
+    ConeSlices slices;
+    slices.cones = coneMarchLanes(settings, int(std::max(res.x, std::max(res.y, res.z)))).cones;
+    slices.perDispatch = conesPerDispatch(u.limits.x, u.march.y, loopsPerStep, settings.dispatchCones);
+    // coneUniforms loads CONE_BLOCK_CONES cones: the first slice must be that or less.
+    slices.perDispatch = std::min(slices.perDispatch, int(u.config.x));
+    return slices;
+}
+
+void loadConeSlice(GLuint ubo, const ConeSlices& slices, int i) {
+    if (slices.count() <= 1) return;
+    const size_t first = size_t(i) * size_t(slices.perDispatch);
+    const size_t n = std::min(size_t(slices.perDispatch), slices.cones.size() - first);
+    glNamedBufferSubData(ubo, GLintptr(offsetof(gpu::ConeUniforms, cones)), GLsizeiptr(n * sizeof(glm::vec4)),
+                         &slices.cones[first]);
+    const GLint count = GLint(n);
+    glNamedBufferSubData(ubo, GLintptr(offsetof(gpu::ConeUniforms, config)), sizeof(count), &count);
+    const GLint split = (i > 0 ? gpu::CONE_SPLIT_RESUME : 0) | (i + 1 < slices.count() ? gpu::CONE_SPLIT_CARRY : 0);
+    glNamedBufferSubData(ubo, GLintptr(offsetof(gpu::ConeUniforms, trace) + 3 * sizeof(GLint)), sizeof(split),
+                         &split);
+}
+
+GlBuffer bindConeCarry(const ConeSlices& slices, size_t slots) {
+    if (slices.count() <= 1 || slots == 0) return GlBuffer();
+    GlBuffer carry = createBuffer(slots * 8 * sizeof(float));  // ConeCarried: two vec4
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_CARRY, carry.id());
+    return carry;
+}
+
+int denseLoopsPerStep(const ConeSettings& settings) { return settings.planeLimit ? 2 : 1; }
 
 glm::ivec4 conePixelImage(const GBuffer& gbuffer, const ConeSettings& settings) {
     return glm::ivec4(gbuffer.width, gbuffer.height, settings.jitter ? 1 : 0, int(settings.seed));
@@ -90,6 +124,7 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
     bindGBufferTextures(gbuffer);  // the shaders texelFetch position, normal, geomNormal, albedo
     bound.directional = bindGridTextures(gi, grid, settings);
     bound.depthLevels = readsDepthLevels(grid, bound.directional);
+    bound.slices = coneSlices(u, settings, denseLoopsPerStep(settings));
     return bound;
 }
 
@@ -140,7 +175,7 @@ GLuint dispatchListStage(GLuint ubo, GLint stage, GLuint list, GLuint image, GLe
 }  // namespace
 
 GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlBuffer& counts, GLuint ubo,
-                            int traceScale) {
+                            int traceScale, const ConeSlices& slices) {
     const GLenum format = gi ? GL_RGBA32F : GL_R32F;
     const int s = std::max(1, traceScale);
     GlTexture out = createTexture2D(format, gbuffer.width, gbuffer.height);
@@ -149,14 +184,23 @@ GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlB
     counts = createBuffer(pixels * 2 * sizeof(float));
     glClearNamedBufferData(counts.id(), GL_R32F, GL_RED, GL_FLOAT, nullptr);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_COUNTS, counts.id());
+    // The gathers' sums between slices, per pixel (the traced and own stages' pixels are the
+    // image's; the own stage starts its gathers anew).
+    GlBuffer carry = bindConeCarry(slices, pixels);
     glUseProgram(program);
     if (s == 1) {
-        dispatchStage(ubo, gpu::CONE_STAGE_TRACE, out.id(), format, gbuffer.width, gbuffer.height);
+        for (int i = 0; i < slices.count(); ++i) {
+            loadConeSlice(ubo, slices, i);
+            dispatchStage(ubo, gpu::CONE_STAGE_TRACE, out.id(), format, gbuffer.width, gbuffer.height);
+        }
     } else {
         // The trace stage: one pixel per s x s block into the traced image.
         const int tw = (gbuffer.width + s - 1) / s, th = (gbuffer.height + s - 1) / s;
         GlTexture traced = createTexture2D(format, tw, th);
-        dispatchStage(ubo, gpu::CONE_STAGE_TRACE, traced.id(), format, tw, th);
+        for (int i = 0; i < slices.count(); ++i) {
+            loadConeSlice(ubo, slices, i);
+            dispatchStage(ubo, gpu::CONE_STAGE_TRACE, traced.id(), format, tw, th);
+        }
         // The resolve stage over every pixel (cone_resolve.glsl), listing those its four
         // blocks do not share for the wide stage, which lists those no block shares: two
         // lists of up to every pixel, a uint each.
@@ -174,11 +218,17 @@ GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlB
         const GLuint wide = dispatchListStage(ubo, gpu::CONE_STAGE_WIDE, own.id(), out.id(), format);
         glBindImageTexture(gpu::CONE_IMAGE_TRACED, 0, 0, GL_FALSE, 0, GL_READ_ONLY, format);
         glUseProgram(program);
-        if (wide > 0) dispatchListStage(ubo, gpu::CONE_STAGE_OWN, own.id(), out.id(), format);
+        if (wide > 0) {
+            for (int i = 0; i < slices.count(); ++i) {
+                loadConeSlice(ubo, slices, i);
+                dispatchListStage(ubo, gpu::CONE_STAGE_OWN, own.id(), out.id(), format);
+            }
+        }
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_OWN_LIST, 0);
     }
     glUseProgram(0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_COUNTS, 0);
+    if (carry) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::CONE_BINDING_CARRY, 0);
     return out;
 }
 

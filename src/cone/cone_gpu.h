@@ -14,6 +14,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace vct::conedetail {
 
@@ -28,6 +29,28 @@ GlBuffer bindConeUniforms(const gpu::ConeUniforms& u);
 // distance limit (world units), sky radiance, plane limit, the cone set.
 gpu::ConeUniforms coneUniforms(bool gi, const VoxelGrid& grid, float maxDistWorld, float sky,
                                const ConeSettings& settings);
+
+// The cones of a pass (the set's lanes) and how many one dispatch marches (cone_budget.h):
+// a pass dispatches once per slice of `perDispatch` cones, each gather carrying its sums to
+// the next (cone_common.glsl), so every slice count gives the same image.
+struct ConeSlices {
+    std::vector<glm::vec4> cones;
+    int perDispatch = 1;
+    int count() const { return int((cones.size() + size_t(perDispatch) - 1) / size_t(perDispatch)); }
+};
+// The slices of a pass with uniforms `u` (coneUniforms: grid, distance limit, step) whose
+// volume runs `loopsPerStep` loop iterations per step (coneLoopBound).
+ConeSlices coneSlices(const gpu::ConeUniforms& u, const ConeSettings& settings, int loopsPerStep);
+// Loads slice `i` into the pass's bound uniform buffer: its cones and count, and whether its
+// dispatch resumes (i > 0) and carries (a slice follows) the gathers' sums. Nothing to load
+// for a pass of one slice: coneUniforms holds it.
+void loadConeSlice(GLuint ubo, const ConeSlices& slices, int i);
+// A buffer of `slots` gathers' carried sums bound at CONE_BINDING_CARRY when the pass has
+// more than one slice (none otherwise).
+GlBuffer bindConeCarry(const ConeSlices& slices, size_t slots);
+// Loop iterations per step of the dense grid's march (coneLoopBound): the step, and the
+// plane limit's level search when on.
+int denseLoopsPerStep(const ConeSettings& settings);
 
 // ConeUniforms::image of a pixel pass over `gbuffer`: its size, and the per-pixel turn of the
 // cone set (vct.jitter) with its seed.
@@ -50,6 +73,7 @@ struct BoundConePass {
     GlBuffer ubo;
     ConeDirectional directional = ConeDirectional::None;
     bool depthLevels = false;
+    ConeSlices slices;
 };
 BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffer, float maxDistWorld, float sky,
                            const ConeSettings& settings);
@@ -61,9 +85,10 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
 // every pixel, one invocation per s x s region, in the resolve's own program
 // (coneResolveProgramKey), CONE_STAGE_WIDE in that program over the pixels the resolve
 // listed, then CONE_STAGE_OWN over the pixels the wide stage listed; a list stage runs when
-// its list has entries), setting the stage in `ubo`, the pass's bound ConeUniforms.
+// its list has entries), setting the stage in `ubo`, the pass's bound ConeUniforms. The
+// stages that march cones (trace, own) run once per slice of `slices`.
 GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlBuffer& counts, GLuint ubo,
-                            int traceScale);
+                            int traceScale, const ConeSlices& slices);
 
 // Runs `trace` (a cone pass that dispatches with dispatchPixelPass) in timer scope `name`;
 // then, outside the timed span, sums its counts into `cost` when given: the readback is for

@@ -39,6 +39,9 @@ void ConeSettings::validate() const {
     require(lanes >= 0 && lanes * coneCount <= gpu::CONE_MAX_CONES,
             "lanes " + std::to_string(lanes) + " x " + std::to_string(coneCount) + " cones outside [0, " +
                 std::to_string(gpu::CONE_MAX_CONES) + "]");
+    require(dispatchCones >= 0 && dispatchCones <= gpu::CONE_MAX_CONES,
+            "dispatchCones " + std::to_string(dispatchCones) + " outside [0, " + std::to_string(gpu::CONE_MAX_CONES) +
+                "]");
 }
 
 ConeLanes coneMarchLanes(const ConeSettings& s, int maxResolution) {
@@ -92,6 +95,11 @@ const SettingsTable<ConeSettings>& coneSettings() {
                      "trace the cones of one pixel per s x s block and resolve the others from the nearest blocks "
                      "that share their surface (normal and tangent plane; a pixel sharing none traces its own): "
                      "the cone pass costs about 1 / s^2 (dense grid and clipmap; not the sparse backend)")
+            .integer("vct.dispatch-cones", &ConeSettings::dispatchCones, 0, gpu::CONE_MAX_CONES,
+                     "at most this many cones per GPU dispatch; 0 = as many as fit the loop budget a driver allows "
+                     "one invocation (llvmpipe ends an invocation's loops after 65535 iterations). The gathers carry "
+                     "their sums across dispatches, so the image is the same for any value; a smaller one only "
+                     "shortens each dispatch (dense grid, clipmap and bounces)")
             .check([](const ConeSettings& s) {
                 if (s.opacity == ConeOpacity::Depth && !s.anisotropic)
                     throw UsageError("--param vct.opacity=depth: optical depth is held by the directional levels; it "

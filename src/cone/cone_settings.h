@@ -3,7 +3,7 @@
 //
 // Keys, defaults, ranges and docs: coneSettings() (vct.cones, vct.aperture, vct.step,
 // vct.offset, vct.max-alpha, vct.aniso, vct.ao-mapping, vct.plane-limit, vct.lanes, vct.jitter,
-// vct.opacity, vct.trace-scale).
+// vct.opacity, vct.trace-scale, vct.dispatch-cones).
 //
 // AO mappings: `linear` A = 1 - sum_c w_c alpha_c, where alpha_c is cone c's opacity
 // accumulated within R; with cosine-lobe weights w_c this estimates A_R, the cosine-weighted
@@ -41,6 +41,7 @@ struct ConeSettings {
     bool jitter = false;            // turn the set about the normal per pixel (cone_jitterAngle)
     ConeOpacity opacity = ConeOpacity::Alpha;  // vct.opacity: the directional levels' encoding
     int traceScale = 1;             // vct.trace-scale: cones traced for one pixel per s x s block, resolved
+    int dispatchCones = 0;          // vct.dispatch-cones: at most this many cones per dispatch; 0 = the loop budget's
     uint32_t seed = 0;              // the render's seed, for the jitter: set by the caller, not a --param
 
     // Throws InternalError naming the field if a value is outside its range.

@@ -12,7 +12,7 @@ namespace vct {
 
 using namespace conedetail;
 
-static_assert(sizeof(gpu::ConeUniforms) == 2 * 64 + 7 * 16 + gpu::CONE_MAX_CONES * 16,
+static_assert(sizeof(gpu::ConeUniforms) == 2 * 64 + 7 * 16 + gpu::CONE_BLOCK_CONES * 16,
               "ConeUniforms must match its std140 layout");
 static_assert(sizeof(gpu::ConeUniforms) <= 16384, "GL 4.5 guarantees uniform blocks of 16 KiB (MAX_UNIFORM_BLOCK_SIZE)");
 
@@ -34,7 +34,7 @@ GlTexture tracePass(ConeMode mode, const VoxelGrid& grid, const GBuffer& gbuffer
     const bool gi = mode == ConeMode::GI;
     BoundConePass bound = bindConePass(gi, grid, gbuffer, maxDistWorld, sky, settings);
     return dispatchPixelPass(cachedProgram(conePassProgramKey(gi, bound.directional, bound.depthLevels)), gi, gbuffer, counts, bound.ubo.id(),
-                             settings.traceScale);
+                             settings.traceScale, bound.slices);
 }
 
 }  // namespace

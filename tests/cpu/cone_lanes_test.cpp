@@ -98,7 +98,7 @@ TEST(ConeLanes, AutoKeepsALanesFootprintInVoxelsAsTheGridRefines) {
     EXPECT_EQ(resolveConeLanes(0, 6, 64), 4);
     EXPECT_EQ(resolveConeLanes(0, 6, 128), 16);
     EXPECT_EQ(resolveConeLanes(0, 6, 256), 64);
-    EXPECT_EQ(resolveConeLanes(0, 6, 1024), gpu::CONE_MAX_CONES / 6) << "clamped to the uniform block";
+    EXPECT_EQ(resolveConeLanes(0, 6, 1024), gpu::CONE_MAX_CONES / 6) << "clamped to CONE_MAX_CONES";
     EXPECT_EQ(resolveConeLanes(0, 64, 256), gpu::CONE_MAX_CONES / 64);
     EXPECT_EQ(resolveConeLanes(0, 6, 16), 1);
     EXPECT_EQ(resolveConeLanes(5, 6, 256), 5) << "an explicit count stays";
@@ -111,16 +111,16 @@ TEST(ConeLanes, AutoKeepsALanesFootprintInVoxelsAsTheGridRefines) {
 
 TEST(ConeLanes, TooManyLanesAreRefusedNamingTheKey) {
     ParamMap p;
-    p.set("vct.lanes=100");
+    p.set("vct.lanes=683");
     try {
         readConeSettings(p);
-        FAIL() << "100 lanes x 6 cones accepted";
+        FAIL() << "683 lanes x 6 cones accepted";
     } catch (const UsageError& e) {
         EXPECT_NE(std::string(e.what()).find("vct.lanes"), std::string::npos) << e.what();
     }
-    p.set("vct.lanes=85");
-    EXPECT_EQ(readConeSettings(p).lanes, 85);
-    EXPECT_THROW(coneLanes(diffuseConeSet(6), 60.f, 86), InternalError);
+    p.set("vct.lanes=682");  // CONE_MAX_CONES = 4096
+    EXPECT_EQ(readConeSettings(p).lanes, 682);
+    EXPECT_THROW(coneLanes(diffuseConeSet(6), 60.f, 683), InternalError);
 }
 
 TEST(CubicGrid, EveryAxisGetsTheLongestAxisCountAroundTheSameCentre) {
