@@ -298,7 +298,7 @@ int main(int argc, char** argv) {
             Point& p = points[v];
             p.frameMs = medianOf(frames[v]);
             p.timeMs = medianOf(totals[v]);
-            if (gpuFrames[v].size() == frames[v].size()) p.gpuFrameMs = medianOf(gpuFrames[v]);
+            p.gpuFrameMs = medianOfEveryRun(gpuFrames[v], frames[v].size());
             for (const auto& [name, t] : passTimes[v]) {
                 char buf[64];
                 std::snprintf(buf, sizeof buf, "%s%s %.1f", p.passes.empty() ? "" : ", ", name.c_str(), medianOf(t));

@@ -69,9 +69,8 @@ ConeSlices coneSlices(const gpu::ConeUniforms& u, const ConeSettings& settings, 
     const glm::vec3 res = glm::vec3(u.gridResolution);
     ConeSlices slices;
     slices.cones = coneMarchLanes(settings, int(std::max(res.x, std::max(res.y, res.z)))).cones;
+    // At most CONE_BLOCK_CONES: the first slice is what coneUniforms loaded.
     slices.perDispatch = conesPerDispatch(u.limits.x, u.march.y, loopsPerStep, settings.dispatchCones);
-    // coneUniforms loads CONE_BLOCK_CONES cones: the first slice must be that or less.
-    slices.perDispatch = std::min(slices.perDispatch, int(u.config.x));
     return slices;
 }
 

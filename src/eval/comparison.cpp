@@ -137,6 +137,11 @@ double medianOf(std::vector<double> v) {
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+std::optional<double> medianOfEveryRun(const std::vector<double>& values, size_t runs) {
+    if (values.empty() || values.size() != runs) return std::nullopt;
+    return medianOf(values);
+}
+
 Image displayableEstimate(const Image& img, bool radiance) {
     if (radiance) return toneMapToSrgb(img, 0.f);
     Image out = img;
@@ -330,8 +335,8 @@ nlohmann::json runComparison(const Scene& scene, const ComparisonSettings& s) {
         rec["time_ms"] = medianOf(totals);   // cold: the scene's static data built anew
         rec["frame_ms"] = medianOf(frames);  // the same runs less what a static scene's next frame reuses
         // The per-frame passes' GPU time, where every run had it (timer queries on a GPU).
-        const bool everyRunTimedOnGpu = !gpuFrames.empty() && gpuFrames.size() == frames.size();
-        rec["frame_gpu_ms"] = everyRunTimedOnGpu ? nlohmann::json(medianOf(gpuFrames)) : nlohmann::json(nullptr);
+        const std::optional<double> gpuFrame = medianOfEveryRun(gpuFrames, frames.size());
+        rec["frame_gpu_ms"] = gpuFrame ? nlohmann::json(*gpuFrame) : nlohmann::json(nullptr);
         nlohmann::json passes = nlohmann::json::object();
         for (const auto& [name, t] : passTimes) passes[name] = medianOf(t);
         rec["passes"] = passes;

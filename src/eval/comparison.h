@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,9 @@ Image validMaskFromDepth(const Image& depth);
 // ones, and its one scored AOV (ao, or indirect).
 RenderRequest variantRequest(const RenderRequest& base, const MethodVariant& v);
 double medianOf(std::vector<double> values);
+// The median of what `runs` timed runs measured where every one of them measured it (the
+// per-frame GPU time exists only where timer queries work); empty otherwise.
+std::optional<double> medianOfEveryRun(const std::vector<double>& values, size_t runs);
 Image displayableEstimate(const Image& image, bool radiance);
 
 // The CSV form of a results document's records (one line per record, header first).

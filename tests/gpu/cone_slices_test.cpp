@@ -11,6 +11,7 @@
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "support/filter_precision.h"
+#include "support/raw_program.h"
 
 #include <gtest/gtest.h>
 
@@ -35,16 +36,9 @@ GLuint countedIterations(int outer, int inner, int tail) {
                                "  for (int c = 0; c < uLoops.z; ++c) k++;\n"
                                "  n = k;\n"
                                "}\n";
-    GlShader cs(glCreateShader(GL_COMPUTE_SHADER));
-    const char* src = source.c_str();
-    glShaderSource(cs.id(), 1, &src, nullptr);
-    glCompileShader(cs.id());
-    GlProgram program(glCreateProgram());
-    glAttachShader(program.id(), cs.id());
-    glLinkProgram(program.id());
-    GLint linked = 0;
-    glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
-    EXPECT_TRUE(linked);
+    const vcttest::RawProgram probe = vcttest::linkCompute(source);
+    EXPECT_TRUE(probe.linked);
+    const GlProgram& program = probe.program;
     GlBuffer count = createBuffer(sizeof(GLuint));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, count.id());
     glUseProgram(program.id());

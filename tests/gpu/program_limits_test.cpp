@@ -7,36 +7,17 @@
 #include "gl/program_cache.h"
 #include "gl/program_limits.h"
 #include "render/program_list.h"
+#include "support/raw_program.h"
 
 #include <gtest/gtest.h>
 
 #include <set>
 
 using namespace vct;
+using vcttest::linkCompute;
+using vcttest::RawProgram;
 
 namespace {
-
-// A compute program from raw source (not the embedded table), for the checker's own tests;
-// `linked` is false where the GL refused it.
-struct RawProgram {
-    GlProgram program;
-    bool linked = false;
-};
-
-RawProgram linkCompute(const std::string& source) {
-    GlShader cs(glCreateShader(GL_COMPUTE_SHADER));
-    const char* src = source.c_str();
-    glShaderSource(cs.id(), 1, &src, nullptr);
-    glCompileShader(cs.id());
-    GLint compiled = 0, linked = 0;
-    glGetShaderiv(cs.id(), GL_COMPILE_STATUS, &compiled);
-    RawProgram p{GlProgram(glCreateProgram()), false};
-    glAttachShader(p.program.id(), cs.id());
-    glLinkProgram(p.program.id());
-    glGetProgramiv(p.program.id(), GL_LINK_STATUS, &linked);
-    p.linked = compiled && linked;
-    return p;
-}
 
 // `count` r32ui image uniforms at units 0..count-1, each written.
 std::string imagesShader(int count) {
