@@ -64,7 +64,8 @@ results: build
 	python3 scripts/make_results.py --vct ./$(BUILD)/vct
 
 # Regenerates the convergence tables of docs/convergence.md (both backends, 32^3..256^3; the
-# default march, the lanes on a cubic grid, and those lanes over optical-depth levels; AO, then
+# default march, the lanes on a cubic grid, and those lanes over optical-depth levels; the total
+# error of the schedule that refines the cones with the voxels; AO, then
 # GI on the emitting families) and the Cornell box's per-surface GI table.
 convergence: build
 	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend gl --markdown docs/convergence_gl.md
@@ -77,6 +78,10 @@ convergence: build
 		--param vct.opacity=depth --markdown docs/convergence_gl_lanes_depth.md
 	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend gl --param vct.aniso=0 --markdown docs/convergence_gl_iso.md
 	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend vdb --param vct.aniso=0 --markdown docs/convergence_vdb_iso.md
+	./$(BUILD)/bench_convergence --schedule 64:6,128:16,256:64:64 --backend gl --param vct.grid=cube --cases ' off' \
+		--markdown docs/convergence_schedule_gl.md
+	./$(BUILD)/bench_convergence --schedule 64:6,128:16,256:64:64 --backend vdb --param vct.grid=cube --cases ' off' \
+		--markdown docs/convergence_schedule_vdb.md
 	$(MAKE) convergence-gi
 
 convergence-gi: build

@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace vct {
 
@@ -356,6 +357,54 @@ PointError pointError(const std::vector<double>& a, const std::vector<double>& b
     }
     e.rms = std::sqrt(s / double(a.size()));
     return e;
+}
+
+}  // namespace vct
+
+namespace vct {
+
+bool voxelErrorConverges(const std::vector<double>& voxelError) {
+    if (voxelError.empty() || !(voxelError.back() <= kVoxelErrorFinest)) return false;
+    for (size_t i = 1; i < voxelError.size(); ++i)
+        if (!(voxelError[i] * kVoxelErrorFall <= voxelError[i - 1] || voxelError[i] < kVoxelErrorFloor)) return false;
+    return true;
+}
+
+bool totalErrorRefines(const std::vector<double>& totalError) {
+    if (totalError.empty() || !(totalError.back() <= kTotalErrorFinest)) return false;
+    for (size_t i = 1; i < totalError.size(); ++i)
+        if (!(totalError[i] <= totalError[i - 1])) return false;
+    return true;
+}
+
+std::vector<ConeScheduleStep> parseConeSchedule(const std::string& text) {
+    std::vector<ConeScheduleStep> steps;
+    std::stringstream list(text);
+    for (std::string item; std::getline(list, item, ',');) {
+        const std::string where = "schedule step " + std::to_string(steps.size() + 1) + " '" + item + "'";
+        std::vector<int> fields;
+        std::stringstream parts(item);
+        for (std::string field; std::getline(parts, field, ':');) {
+            size_t used = 0;
+            int value = -1;
+            try {
+                value = std::stoi(field, &used);
+            } catch (const std::exception&) {
+                used = 0;
+            }
+            if (field.empty() || used != field.size() || value < 0)
+                throw std::invalid_argument(where + ": '" + field + "' is not a whole number >= 0 (RES:CONES[:LANES])");
+            fields.push_back(value);
+        }
+        if (fields.size() < 2 || fields.size() > 3)
+            throw std::invalid_argument(where + ": expected RES:CONES or RES:CONES:LANES");
+        ConeScheduleStep step{fields[0], fields[1], fields.size() == 3 ? fields[2] : 0};
+        if (!steps.empty() && step.voxelRes <= steps.back().voxelRes)
+            throw std::invalid_argument(where + ": resolutions must increase from step to step");
+        steps.push_back(step);
+    }
+    if (steps.empty()) throw std::invalid_argument("schedule '" + text + "' has no steps (RES:CONES[:LANES],...)");
+    return steps;
 }
 
 }  // namespace vct

@@ -75,4 +75,30 @@ struct PointError {
 };
 PointError pointError(const std::vector<double>& a, const std::vector<double>& b);
 
+// The two rules the tables check, on a case's RMS errors from the coarsest step to the finest.
+// The voxel error (VCT - cone model) converges when each doubling of the resolution divides it
+// by at least kVoxelErrorFall (a step already below kVoxelErrorFloor only has to stay below it)
+// and the finest is at most kVoxelErrorFinest.
+inline constexpr double kVoxelErrorFall = 1.5;
+inline constexpr double kVoxelErrorFloor = 0.01;
+inline constexpr double kVoxelErrorFinest = 0.02;
+bool voxelErrorConverges(const std::vector<double>& voxelError);
+// The total error (VCT - exact) of a schedule that refines the cone set with the voxels
+// refines when it never grows from one step to the next and the finest is at most
+// kTotalErrorFinest.
+inline constexpr double kTotalErrorFinest = 0.05;
+bool totalErrorRefines(const std::vector<double>& totalError);
+
+// One step of such a schedule: a resolution and the cone set (vct.cones) and lanes (vct.lanes,
+// 0 = auto) that march it.
+struct ConeScheduleStep {
+    int voxelRes = 0;
+    int cones = 0;
+    int lanes = 0;
+};
+// "RES:CONES[:LANES],..." (e.g. "64:6,128:16,256:64:64"), resolutions strictly increasing.
+// Throws std::invalid_argument naming the step that is not of that form; the cone set and the
+// lanes are checked by the cone settings (vct.cones, vct.lanes) when a step runs.
+std::vector<ConeScheduleStep> parseConeSchedule(const std::string& text);
+
 }  // namespace vct

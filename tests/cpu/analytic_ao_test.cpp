@@ -135,7 +135,9 @@ TEST(AnalyticAo, TheGiReferencesConeModelIsTheQuadraturesConeModel) {
             const double toModel = std::sqrt(modelErr2 / n), toExact = std::sqrt(exactErr2 / n);
             std::printf("[ %s, %d cones ] %d floor pixels: RMS to the cone model %.4f, to the exact %.4f\n",
                         c.name.c_str(), cones, n, toModel, toExact);
-            if (cones == 6 && c.name == "plate h=0.5R a=2R gi") EXPECT_LT(2.0 * toModel, toExact);
+            if (cones == 6 && c.name == "plate h=0.5R a=2R gi") {
+                EXPECT_LT(2.0 * toModel, toExact);
+            }
         }
     }
     EXPECT_GT(scored, 80);
