@@ -5,6 +5,7 @@
 // dense resolution whose memory does not exceed the clipmap's. Time = the whole render
 // (voxelize, mips, cones; the G-buffer is cached), median-free single run after a warm-up.
 //   bench_clipmap [--size N] [--spp N] [--res N] [--levels L] [--scene PATH]
+#include "bench_main.h"
 #include "eval/metrics.h"
 #include "gl/context.h"
 #include "render/renderer.h"
@@ -78,7 +79,7 @@ struct Row {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+static int benchRun(int argc, char** argv) {
     int size = 128, spp = 256, res = 128, levels = 4;
     std::vector<std::string> scenes;
     for (int i = 1; i + 1 < argc; i += 2) {
@@ -180,3 +181,5 @@ int main(int argc, char** argv) {
     }
     return 0;
 }
+
+int main(int argc, char** argv) { return vct::benchMain("bench_clipmap", benchRun, argc, argv); }

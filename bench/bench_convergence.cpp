@@ -13,6 +13,7 @@
 // --schedule refines the cone set with the voxels (each step its resolution, vct.cones and
 // vct.lanes on top of --param) and checks the total error instead: it never grows from step
 // to step and is at most 0.05 at the last (totalErrorRefines).
+#include "bench_main.h"
 #include "eval/convergence.h"
 #include "gl/context.h"
 #include "util/atomic_file.h"
@@ -177,13 +178,4 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    // A bad --param (out of range, too many lanes) or an unreadable input ends with its message
-    // and exit status 1, not an uncaught exception.
-    try {
-        return run(argc, argv);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "bench_convergence: %s\n", e.what());
-        return 1;
-    }
-}
+int main(int argc, char** argv) { return vct::benchMain("bench_convergence", run, argc, argv); }

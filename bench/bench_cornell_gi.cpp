@@ -12,6 +12,7 @@
 //
 //   bench_cornell_gi [--res 32,64,128] [--size 96] [--spp 1024] [--param KEY=VALUE ...]
 //                    [--images DIR] [--scene FILE] [--cone-model]
+#include "bench_main.h"
 #include "cone/cone_bounce.h"
 #include "eval/image_io.h"
 #include "eval/metrics.h"
@@ -53,7 +54,7 @@ bool onSurface(const Surface& s, const Image& normal, const Image& position, siz
 
 }  // namespace
 
-int main(int argc, char** argv) {
+static int benchRun(int argc, char** argv) {
     CLI::App app{"VCT GI on the Cornell box per surface against the bounce-matched path tracer"};
     std::string resList = "32,64,128", images, scenePath = std::string(VCT_SOURCE_DIR) + "/scenes/cornell_box.gltf";
     int size = 96, spp = 1024;
@@ -148,3 +149,5 @@ int main(int argc, char** argv) {
     }
     return 0;
 }
+
+int main(int argc, char** argv) { return vct::benchMain("bench_cornell_gi", benchRun, argc, argv); }

@@ -2,6 +2,7 @@
 // the GL renderer string. Default: 512x512, the Cornell box and, when present,
 // ../shared/scenes/floor_suzanne.glb, R = 0.5, reference 256 spp.
 //   bench_methods [--size N] [--spp N] [--runs N] [--scene PATH]...
+#include "bench_main.h"
 #include "eval/comparison.h"
 #include "gl/context.h"
 #include "scene/camera.h"
@@ -17,7 +18,7 @@
 
 using namespace vct;
 
-int main(int argc, char** argv) {
+static int benchRun(int argc, char** argv) {
     int size = 512, spp = 256, runs = 3;
     std::vector<std::string> scenes;
     for (int i = 1; i + 1 < argc; i += 2) {
@@ -65,3 +66,5 @@ int main(int argc, char** argv) {
     }
     return 0;
 }
+
+int main(int argc, char** argv) { return vct::benchMain("bench_methods", benchRun, argc, argv); }

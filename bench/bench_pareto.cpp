@@ -33,6 +33,7 @@
 // docs/results.md's study (eye (-11, 1.8, 0.5), target (4, 3.5, -0.5), 60 deg), R = 1, lit by
 // a uniform sky of 0.5 alone for GI (it has no lights); the Cornell box and the off-screen
 // scenes: their own cameras, R = 0.5, sky 0 for GI.
+#include "bench_main.h"
 #include "eval/comparison.h"
 #include "eval/metrics.h"
 #include "gl/context.h"
@@ -46,7 +47,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -108,7 +111,7 @@ double referenceCostAt(const std::vector<Point>& curve, double e, double Point::
 
 }  // namespace
 
-int main(int argc, char** argv) {
+static int benchRun(int argc, char** argv) {
     int aoSize = 512, giSize = 256, truthSpp = 256, maxSpp = 128, runs = 3, voxelRes = 128;
     std::vector<std::string> only;
     using Settings = std::vector<std::pair<std::string, std::string>>;
@@ -248,6 +251,7 @@ int main(int argc, char** argv) {
         const Image valid = validMaskFromDepth(truthRun.aovs.at("depth"));
 
         std::vector<std::pair<std::string, RenderRequest>> variants;
+        std::map<std::string, std::set<std::string>> ownKeys;  // each VCT variant's own settings
         std::vector<int> spps;
         for (int spp = 1; spp <= maxSpp; spp *= 2) spps.push_back(spp);
         for (int spp : spps) variants.push_back({"reference " + std::to_string(spp) + " spp", request("reference", spp, 0)});
@@ -261,7 +265,10 @@ int main(int argc, char** argv) {
             if (c.gi && v.aoOnly) continue;
             RenderRequest r = request("vct", 1, 0);
             if (v.voxelRes > 0) r.voxelRes = v.voxelRes;
-            for (const auto& [k, value] : v.settings) r.params.set(k, value);
+            for (const auto& [k, value] : v.settings) {
+                r.params.set(k, value);
+                ownKeys[v.label].insert(k);
+            }
             variants.push_back({v.label, r});
         }
 
@@ -273,6 +280,14 @@ int main(int argc, char** argv) {
         for (auto& [label, req] : variants) {
             std::fprintf(stderr, "%s: %s\n", c.name.c_str(), label.c_str());
             const RenderResult first = session.render(req);
+            // A misspelt --vct key (region=scene for vct.region=scene) would time the default
+            // march under the variant's name.
+            for (const std::string& unused : first.unusedParams)
+                if (ownKeys.count(label) && ownKeys.at(label).count(unused)) {
+                    std::fprintf(stderr, "bench_pareto: %s: '%s' is not a parameter of this render (see vct render --help-params)\n",
+                                 label.c_str(), unused.c_str());
+                    return 2;
+                }
             Point p;
             p.label = label;
             p.reference = req.ao == "reference" || req.gi == "reference";
@@ -344,3 +359,5 @@ int main(int argc, char** argv) {
     }
     return 0;
 }
+
+int main(int argc, char** argv) { return vct::benchMain("bench_pareto", benchRun, argc, argv); }

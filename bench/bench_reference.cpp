@@ -6,6 +6,7 @@
 // The scene is looked up in $VCT_SHARED_SCENES, else VCT_SOURCE_DIR "/../shared/scenes";
 // the benchmark prints a note and exits 0 when it is missing. Prints a table (no Google
 // Benchmark fixtures: one scene, a few modes, medians of 3 runs).
+#include "bench_main.h"
 #include "reference/embree_scene.h"
 #include "reference/reference_ao.h"
 #include "reference/reference_gi.h"
@@ -97,7 +98,7 @@ double rawOcclusion(const EmbreeScene& es, const std::vector<RTCRay>& source, ui
 
 }  // namespace
 
-int main() {
+static int benchRun(int, char**) {
     const std::string path = scenePath();
     if (!std::ifstream(path).good()) {
         std::printf("bench_reference: %s not found; set VCT_SHARED_SCENES. Skipped.\n", path.c_str());
@@ -211,3 +212,5 @@ int main() {
                 g.raysPerSecond * 1e-6, g.meanStderr);
     return 0;
 }
+
+int main(int argc, char** argv) { return vct::benchMain("bench_reference", benchRun, argc, argv); }

@@ -19,6 +19,7 @@
 // the per-pixel counts are those of the real pass, including early exits. The bare shader
 // (shaders/bench/fetch.glsl) then does exactly that many textureLod calls per pixel on a
 // 128^3 RGBA16F mipmapped texture (GL_LINEAR_MIPMAP_LINEAR, as the grid).
+#include "bench_main.h"
 #include "cone/cone_bounce.h"
 #include "cone/cone_gpu.h"
 #include "cone/cone_programs.h"
@@ -300,7 +301,7 @@ void benchScene(const BenchScene& bs, const Options& opt) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+static int benchRun(int argc, char** argv) {
     Options opt;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string a = argv[i];
@@ -330,3 +331,5 @@ int main(int argc, char** argv) {
     }
     return 0;
 }
+
+int main(int argc, char** argv) { return vct::benchMain("bench_vct", benchRun, argc, argv); }

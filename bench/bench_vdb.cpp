@@ -7,6 +7,7 @@
 //
 // The scene is looked up in $VCT_SHARED_SCENES, else VCT_SOURCE_DIR "/../shared/scenes"; the
 // benchmark prints a note and exits 0 when it is missing. VCT_VDB_RES=64,128 picks resolutions.
+#include "bench_main.h"
 #include "reference/embree_scene.h"
 #include "reference/reference_ao.h"
 #include "core/view.h"
@@ -48,7 +49,7 @@ double mib(size_t bytes) { return double(bytes) / (1024.0 * 1024.0); }
 
 }  // namespace
 
-int main() {
+static int benchRun(int, char**) {
     const std::string path = scenePath();
     if (!std::ifstream(path).good()) {
         std::printf("bench_vdb: %s not found; set VCT_SHARED_SCENES. Skipped.\n", path.c_str());
@@ -112,3 +113,5 @@ int main() {
                 "(cubeMiB)\n");
     return 0;
 }
+
+int main(int argc, char** argv) { return vct::benchMain("bench_vdb", benchRun, argc, argv); }

@@ -44,7 +44,7 @@ void main() {
     float viewDepth = -(viewFromWorld * vec4(vWorldPos, 1.0)).z;
     outPosition = vec4(vWorldPos, max(viewDepth, 1e-30));
     outNormal = vec4(n, 1.0);
-    outGeomNormal = vec4(ng, float(tri + 1u));
+    outGeomNormal = vec4(ng, 1.0);
 #ifndef GBUFFER_SURFACE_ONLY
     outAlbedo = vec4(base.rgb, 1.0);
     outEmission = vec4(scene_emission(material, vUv, -1.0), 1.0);

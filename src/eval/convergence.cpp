@@ -2,6 +2,7 @@
 
 #include "cone/cone_set.h"
 #include "cone/cone_settings.h"
+#include "core/errors.h"
 #include "core/method.h"
 #include "gl/context.h"
 #include "gl/readback.h"
@@ -393,17 +394,17 @@ std::vector<ConeScheduleStep> parseConeSchedule(const std::string& text) {
                 used = 0;
             }
             if (field.empty() || used != field.size() || value < 0)
-                throw std::invalid_argument(where + ": '" + field + "' is not a whole number >= 0 (RES:CONES[:LANES])");
+                throw UsageError(where + ": '" + field + "' is not a whole number >= 0 (RES:CONES[:LANES])");
             fields.push_back(value);
         }
         if (fields.size() < 2 || fields.size() > 3)
-            throw std::invalid_argument(where + ": expected RES:CONES or RES:CONES:LANES");
+            throw UsageError(where + ": expected RES:CONES or RES:CONES:LANES");
         ConeScheduleStep step{fields[0], fields[1], fields.size() == 3 ? fields[2] : 0};
         if (!steps.empty() && step.voxelRes <= steps.back().voxelRes)
-            throw std::invalid_argument(where + ": resolutions must increase from step to step");
+            throw UsageError(where + ": resolutions must increase from step to step");
         steps.push_back(step);
     }
-    if (steps.empty()) throw std::invalid_argument("schedule '" + text + "' has no steps (RES:CONES[:LANES],...)");
+    if (steps.empty()) throw UsageError("schedule '" + text + "' has no steps (RES:CONES[:LANES],...)");
     return steps;
 }
 

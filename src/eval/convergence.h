@@ -97,7 +97,7 @@ struct ConeScheduleStep {
     int lanes = 0;
 };
 // "RES:CONES[:LANES],..." (e.g. "64:6,128:16,256:64:64"), resolutions strictly increasing.
-// Throws std::invalid_argument naming the step that is not of that form; the cone set and the
+// Throws UsageError naming the step that is not of that form; the cone set and the
 // lanes are checked by the cone settings (vct.cones, vct.lanes) when a step runs.
 std::vector<ConeScheduleStep> parseConeSchedule(const std::string& text);
 

@@ -17,8 +17,9 @@ GBuffer renderGBuffer(const GpuScene& scene, const View& view, PassTimer& timer,
     g.width = view.width;
     g.height = view.height;
     g.position = createTexture2D(GL_RGBA32F, g.width, g.height);
-    g.normal = createTexture2D(GL_RGBA32F, g.width, g.height);
-    g.geomNormal = createTexture2D(GL_RGBA32F, g.width, g.height);
+    // Unit normals need no 32-bit floats (core/gbuffer.h).
+    g.normal = createTexture2D(GL_RGBA16F, g.width, g.height);
+    g.geomNormal = createTexture2D(GL_RGBA16F, g.width, g.height);
     if (materials) {
         g.albedo = createTexture2D(GL_RGBA32F, g.width, g.height);
         g.emission = createTexture2D(GL_RGBA32F, g.width, g.height);

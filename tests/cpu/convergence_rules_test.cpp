@@ -1,6 +1,7 @@
 // The rules the convergence tables apply (eval/convergence.h) and the schedule that refines
 // the cone set with the voxels: each rule on error sequences whose verdict follows from its
 // definition by hand, at and around its thresholds.
+#include "core/errors.h"
 #include "eval/convergence.h"
 
 #include <gtest/gtest.h>
@@ -50,7 +51,7 @@ TEST(ConeSchedule, BadStepsAreNamed) {
     auto message = [](const std::string& text) {
         try {
             parseConeSchedule(text);
-        } catch (const std::invalid_argument& e) {
+        } catch (const UsageError& e) {
             return std::string(e.what());
         }
         return std::string("no error");

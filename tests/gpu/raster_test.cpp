@@ -98,10 +98,13 @@ TEST(Raster, GBufferGeometricNormalIsTheTrianglesPlaneFacingTheEye) {
             const float* q = &geo.pixels[4 * size_t(i)];
             if (q[3] == 0.f) continue;
             ++covered;
-            EXPECT_NEAR(q[0], side * plane.x, 1e-6f) << "pixel " << i;
-            EXPECT_NEAR(q[1], side * plane.y, 1e-6f) << "pixel " << i;
+            // RGBA16F: a unit normal's components to one unit in the last place of a half float
+            // below 1, 2^-11 (GL leaves the rounding of the conversion to the driver; llvmpipe
+            // truncates).
+            EXPECT_NEAR(q[0], side * plane.x, 4.9e-4f) << "pixel " << i;
+            EXPECT_NEAR(q[1], side * plane.y, 4.9e-4f) << "pixel " << i;
             EXPECT_NEAR(q[2], 0.f, 1e-6f) << "pixel " << i;
-            EXPECT_TRUE(q[3] == 1.f || q[3] == 2.f) << "triangle id " << q[3];
+            EXPECT_EQ(q[3], 1.f) << "pixel " << i;
         }
         EXPECT_EQ(covered, w * w);
     }
