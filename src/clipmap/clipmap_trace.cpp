@@ -30,7 +30,7 @@ void checkInputs(const Clipmap& cm, const GBuffer& g, const View& view, const st
 }
 
 GlTexture traceClipmap(bool gi, const Clipmap& cm, const GBuffer& gbuffer, float maxDistWorld, float sky,
-                       const ConeSettings& settings, GlBuffer& counts) {
+                       const ConeSettings& settings, GlBuffer& counts, int& dispatches) {
     const ClipmapLayout& layout = cm.layout;
     const VoxelGrid& base = cm.levels.front();
     gpu::ConeUniforms u = coneUniforms(gi, base, maxDistWorld, sky, settings);
@@ -59,6 +59,7 @@ GlTexture traceClipmap(bool gi, const Clipmap& cm, const GBuffer& gbuffer, float
     // Per step: the march and its plane-limit search (denseLoopsPerStep), and the level
     // search over the clipmap's levels (clip_positionLod) for each of the step's two lods.
     const ConeSlices slices = coneSlices(u, settings, denseLoopsPerStep(settings) + 2 * (layout.levelCount - 1));
+    dispatches = slices.count();
     GlTexture out = dispatchPixelPass(program, gi, gbuffer, counts, ubo.id(), settings.traceScale, slices);
     for (int l = 0; l < layout.levelCount; ++l) glBindTextureUnit(GLuint(gpu::CLIPMAP_UNIT_LEVEL0 + l), 0);
     return out;
@@ -72,8 +73,8 @@ GlTexture coneTraceClipmapAO(const Clipmap& cm, const GBuffer& gbuffer, const Vi
     settings.validate();
     if (!(radius >= 0.f) || !std::isfinite(radius))
         throw InternalError("coneTraceClipmapAO", "radius " + std::to_string(radius) + " must be finite and >= 0");
-    return timedConePass(timer, "cone_ao", gbuffer, cost, [&](GlBuffer& counts) {
-        return traceClipmap(false, cm, gbuffer, radius, 0.f, settings, counts);
+    return timedConePass(timer, "cone_ao", gbuffer, cost, [&](GlBuffer& counts, int& dispatches) {
+        return traceClipmap(false, cm, gbuffer, radius, 0.f, settings, counts, dispatches);
     });
 }
 
@@ -88,8 +89,8 @@ GlTexture coneTraceClipmapGI(const Clipmap& cm, const GBuffer& gbuffer, const Vi
     // As the dense path: twice the coarsest level's diagonal bounds every path inside it.
     const float diagonal = std::sqrt(3.f) * float(cm.layout.resolution) *
                            cm.layout.voxelSize(cm.layout.levelCount - 1);
-    return timedConePass(timer, "cone_gi", gbuffer, cost, [&](GlBuffer& counts) {
-        return traceClipmap(true, cm, gbuffer, 2.f * diagonal, sky, settings, counts);
+    return timedConePass(timer, "cone_gi", gbuffer, cost, [&](GlBuffer& counts, int& dispatches) {
+        return traceClipmap(true, cm, gbuffer, 2.f * diagonal, sky, settings, counts, dispatches);
     });
 }
 

@@ -15,6 +15,7 @@ nlohmann::json coneCostJson(const ConeCost& c, const ConeSettings& s, int voxelR
             {"surface_pixels", c.surfacePixels},
             {"traced_pixels", c.tracedPixels},
             {"trace_scale", s.traceScale},
+            {"dispatches", c.dispatches},
             {"cones_marched", s.coneCount * resolveConeLanes(s.lanes, s.coneCount, voxelRes)}};
 }
 

@@ -17,6 +17,10 @@ struct ConeCost {
     int pixels = 0;         // the image's
     int surfacePixels = 0;  // those with a surface (not sky): the per-pixel figures' divisor
     int tracedPixels = 0;   // those whose own cones were marched (fewer with vct.trace-scale > 1)
+    // A GPU pass's dispatches per marching stage: the cone set split by the loop budget
+    // (cone/cone_budget.h, vct.dispatch-cones), 1 where it fits one; 0 on the sparse CPU tracer,
+    // which has none.
+    int dispatches = 0;
 
     // One pixel's counts: `surface` when the G-buffer has a surface there, whether or not the
     // pixel's own cones were traced (zero samples: sky, or resolved from traced neighbours).

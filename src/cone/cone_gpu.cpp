@@ -232,12 +232,13 @@ GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlB
 }
 
 GlTexture timedConePass(PassTimer& timer, const char* name, const GBuffer& gbuffer, ConeCost* cost,
-                        const std::function<GlTexture(GlBuffer& counts)>& trace) {
+                        const std::function<GlTexture(GlBuffer& counts, int& dispatches)>& trace) {
     GlBuffer counts;
     GlTexture out;
+    int dispatches = 0;
     {
         auto scope = timer.scope(name);
-        out = trace(counts);
+        out = trace(counts, dispatches);
     }
     if (cost) {
         const size_t pixels = size_t(gbuffer.width) * size_t(gbuffer.height);
@@ -248,6 +249,7 @@ GlTexture timedConePass(PassTimer& timer, const char* name, const GBuffer& gbuff
         const Image position = readTexture2D(gbuffer.position.id(), gbuffer.width, gbuffer.height, 4);
         *cost = ConeCost{};
         for (size_t i = 0; i < pixels; ++i) cost->addPixel(c[2 * i], c[2 * i + 1], position.pixels[4 * i + 3] > 0.f);
+        cost->dispatches = dispatches;
     }
     return out;
 }

@@ -90,11 +90,11 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
 GlTexture dispatchPixelPass(GLuint program, bool gi, const GBuffer& gbuffer, GlBuffer& counts, GLuint ubo,
                             int traceScale, const ConeSlices& slices);
 
-// Runs `trace` (a cone pass that dispatches with dispatchPixelPass) in timer scope `name`;
-// then, outside the timed span, sums its counts into `cost` when given: the readback is for
-// the statistics, not part of the pass's cost.
+// Runs `trace` (a cone pass that dispatches with dispatchPixelPass, and sets `dispatches` to
+// its slices' count) in timer scope `name`; then, outside the timed span, sums its counts into
+// `cost` when given: the readback is for the statistics, not part of the pass's cost.
 GlTexture timedConePass(PassTimer& timer, const char* name, const GBuffer& gbuffer, ConeCost* cost,
-                        const std::function<GlTexture(GlBuffer& counts)>& trace);
+                        const std::function<GlTexture(GlBuffer& counts, int& dispatches)>& trace);
 
 // Throws InternalError naming `pass` if the grid is not usable.
 void checkGrid(const VoxelGrid& grid, const std::string& pass);

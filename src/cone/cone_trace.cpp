@@ -30,9 +30,10 @@ void checkGBuffer(const GBuffer& g, const View& view, const std::string& pass, b
 
 // One cone pass: AO (R32F) or GI (RGBA32F).
 GlTexture tracePass(ConeMode mode, const VoxelGrid& grid, const GBuffer& gbuffer, float maxDistWorld, float sky,
-                    const ConeSettings& settings, GlBuffer& counts) {
+                    const ConeSettings& settings, GlBuffer& counts, int& dispatches) {
     const bool gi = mode == ConeMode::GI;
     BoundConePass bound = bindConePass(gi, grid, gbuffer, maxDistWorld, sky, settings);
+    dispatches = bound.slices.count();
     return dispatchPixelPass(cachedProgram(conePassProgramKey(gi, bound.directional, bound.depthLevels)), gi, gbuffer, counts, bound.ubo.id(),
                              settings.traceScale, bound.slices);
 }
@@ -46,8 +47,8 @@ GlTexture coneTraceAO(const VoxelGrid& grid, const GBuffer& gbuffer, const View&
     settings.validate();
     if (!(radius >= 0.f) || !std::isfinite(radius))
         throw InternalError("coneTraceAO", "radius " + std::to_string(radius) + " must be finite and >= 0");
-    return timedConePass(timer, "cone_ao", gbuffer, cost, [&](GlBuffer& counts) {
-        return tracePass(ConeMode::AO, grid, gbuffer, radius, 0.f, settings, counts);
+    return timedConePass(timer, "cone_ao", gbuffer, cost, [&](GlBuffer& counts, int& dispatches) {
+        return tracePass(ConeMode::AO, grid, gbuffer, radius, 0.f, settings, counts, dispatches);
     });
 }
 
@@ -61,8 +62,8 @@ GlTexture coneTraceGI(const VoxelGrid& grid, const GBuffer& gbuffer, const View&
         throw InternalError("coneTraceGI", "sky radiance " + std::to_string(sky) + " must be finite and >= 0");
     // GI cones run until they leave the grid: the box diagonal bounds every path inside it.
     float diagonal = glm::length(glm::vec3(grid.resolution)) * grid.voxelSize;
-    return timedConePass(timer, "cone_gi", gbuffer, cost, [&](GlBuffer& counts) {
-        return tracePass(ConeMode::GI, grid, gbuffer, 2.f * diagonal, sky, settings, counts);
+    return timedConePass(timer, "cone_gi", gbuffer, cost, [&](GlBuffer& counts, int& dispatches) {
+        return tracePass(ConeMode::GI, grid, gbuffer, 2.f * diagonal, sky, settings, counts, dispatches);
     });
 }
 

@@ -360,10 +360,6 @@ PointError pointError(const std::vector<double>& a, const std::vector<double>& b
     return e;
 }
 
-}  // namespace vct
-
-namespace vct {
-
 bool voxelErrorConverges(const std::vector<double>& voxelError) {
     if (voxelError.empty() || !(voxelError.back() <= kVoxelErrorFinest)) return false;
     for (size_t i = 1; i < voxelError.size(); ++i)

@@ -214,4 +214,14 @@ TEST(FrameCost, ConeCountersFollowTheShadersFetchRules) {
     const nlohmann::json lanes = counters("vct", "none", {"vct.lanes=4"});
     EXPECT_EQ(lanes["cones_marched"], 24);
     EXPECT_GE(lanes["samples_per_pixel"].get<double>(), 4.0 * ao["samples_per_pixel"].get<double>());
+    // The dispatches per marching stage: the default sets fit one; one cone per dispatch
+    // (vct.dispatch-cones=1) makes one per cone, the same samples; the CPU tracer has none.
+    EXPECT_EQ(ao["dispatches"], 1);
+    EXPECT_EQ(gi["dispatches"], 1);
+    const nlohmann::json split = counters("vct", "none", {"vct.dispatch-cones=1"});
+    EXPECT_EQ(split["dispatches"], 6);
+    EXPECT_EQ(split["samples"], ao["samples"]);
+    EXPECT_EQ(lanes["dispatches"], 1);
+    EXPECT_EQ(counters("vct", "none", {"vct.lanes=4", "vct.dispatch-cones=5"})["dispatches"], 5);  // 24 cones
+    EXPECT_EQ(vdb["dispatches"], 0);
 }
