@@ -320,14 +320,9 @@ static int benchRun(int argc, char** argv) {
     const GlContextInfo& info = GlContext::shared().info();
     std::printf("bench_vct: GL renderer '%s' (%s), %u cores; ratio = cone pass fetch rate / bare fetch rate\n",
                 info.renderer.c_str(), info.version.c_str(), std::thread::hardware_concurrency());
-    try {
-        for (const auto& name : opt.scenes) {
-            BenchScene bs;
-            if (loadBenchScene(name, bs)) benchScene(bs, opt);
-        }
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "bench_vct: %s\n", e.what());
-        return 1;
+    for (const auto& name : opt.scenes) {
+        BenchScene bs;
+        if (loadBenchScene(name, bs)) benchScene(bs, opt);
     }
     return 0;
 }
