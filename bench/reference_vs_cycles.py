@@ -106,6 +106,13 @@ def main():
     if shutil.which("blender") is None:
         print("reference_vs_cycles: no blender on PATH (Debian: apt-get install blender); skipped")
         return
+    # The comparison reads the EXRs with numpy and OpenImageIO: say so before Cycles' minutes.
+    try:
+        import numpy  # noqa: F401
+        import OpenImageIO  # noqa: F401
+    except ImportError as e:
+        sys.exit("reference_vs_cycles: %s under %s (Debian: apt-get install python3-numpy "
+                 "python3-openimageio, and run it with /usr/bin/python3)" % (e, sys.executable))
     os.makedirs(args.out, exist_ok=True)
     print("%s, %d^2, %d spp, R = %g, eye %s, target %s, fov %g, %d cores" %
           (os.path.basename(args.scene), args.size, args.spp, args.radius, args.eye, args.target, args.fov,

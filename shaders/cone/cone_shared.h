@@ -3,6 +3,7 @@
 // by both `layout(local_size...)` and the dispatch math, texture units, and the DEFAULT_*
 // values of ConeSettings with the reason for each.
 #pragma once
+#include "common/loop_budget.h"
 #include "common/shared_types.h"
 #include "voxelize/voxelize_shared.h"
 
@@ -25,15 +26,12 @@ VCT_CONST int CONE_MAX_CONES = 4096;
 // Cones in the uniform block: the slice of the set one dispatch marches. 512 vec4 = 8 KiB,
 // half of the 16 KiB GL 4.5 guarantees.
 VCT_CONST int CONE_BLOCK_CONES = 512;
-// Loop iterations one invocation may run before the driver ends its loops. llvmpipe counts
-// every loop iteration of an invocation, all loops together, and leaves every loop once the
-// count reaches 65535 (gallivm's LP_MAX_TGSI_LOOP_ITERATIONS): silently, with whatever the
-// sums hold then. 16 cones x 62 lanes of about 100 steps gave AO 0.13 off the sparse path's
-// value that way. A pass marches as many cones per dispatch as its bound on a cone's loop
-// iterations (coneLoopBound, src/cone/cone_budget.h) lets fit this budget, and carries each
-// gather's sums to the next dispatch (cone_common.glsl): the same sums in the same order as
-// one dispatch. 5535 below the limit for the passes' other loops.
-VCT_CONST int CONE_LOOP_BUDGET = 60000;
+// Loop iterations one cone pass's invocation may run (common/loop_budget.h). 16 cones x 62
+// lanes of about 100 steps gave AO 0.13 off the sparse path's value when llvmpipe ended the
+// loops. A pass marches as many cones per dispatch as its bound on a cone's loop iterations
+// (coneLoopBound, src/cone/cone_budget.h) lets fit this budget, and carries each gather's sums
+// to the next dispatch (cone_common.glsl): the same sums in the same order as one dispatch.
+VCT_CONST int CONE_LOOP_BUDGET = SHADER_LOOP_BUDGET;
 // vct.lanes = auto: one lane per cone at 32^3, (res / 32)^2 lanes above, so a lane's
 // footprint at R spans the same number of voxels at every resolution (4.6 voxels for a
 // 60-degree cone at R = 4 voxels, i.e. R = 1/8 of a 32^3 grid).

@@ -5,6 +5,12 @@
 // change with the grid resolution. Output premultiplied: (L * opacity, opacity).
 // TWO_SIDED: two-sided voxels (voxelize_shared.h) are lit on each face and write their facing
 // normal, level 0 of the normal texture, which the mips then filter.
+// LIGHT_BATCHES: one dispatch of several that each sum lights [uLightFirst, uLightEnd) onto the
+// irradiance the previous ones left in ioIrradiance (and ioIrradianceBack for the back faces of
+// two-sided voxels); the last (uLastBatch) writes the radiance. An invocation's shadow walks
+// cost up to a grid diagonal each, and llvmpipe ends its loops after 65535 iterations
+// (common/loop_budget.h), so injectRadiance gives each dispatch as many lights as that budget
+// holds: the same sums in the same order as one dispatch.
 #include "common/scene.glsl"
 #include "voxelize/voxelize_shared.h"
 
@@ -19,11 +25,19 @@ layout(RADIANCE_FORMAT, binding = 0) uniform writeonly image3D outRadiance;
 layout(binding = 4) uniform sampler3D uTwoSided;  // xyz = winding normal, w = doubleSided share
 layout(rgba16f, binding = 1) uniform writeonly image3D outNormal;
 #endif
+#ifdef LIGHT_BATCHES
+layout(rgba32f, binding = 2) uniform image3D ioIrradiance;
+#ifdef TWO_SIDED
+layout(rgba32f, binding = 3) uniform image3D ioIrradianceBack;
+#endif
+uniform bool uLastBatch;
+#endif
 
 uniform ivec3 uResolution;
 uniform vec3 uGridOrigin;
 uniform float uVoxelSize;
-uniform int uLightCount;
+uniform int uLightFirst;  // the lights this dispatch sums: [uLightFirst, uLightEnd)
+uniform int uLightEnd;
 uniform float uShadowOffset;  // voxels along the normal before the shadow ray starts
 
 const float PI = 3.14159265358979;
@@ -140,12 +154,30 @@ vec3 inject_lightIrradiance(int i, vec3 pWorld, vec3 pVoxel, vec3 n) {
     return intensity * cosine * inject_visibility(start, toLight, tMax);
 }
 
+// Irradiance of this dispatch's lights on a face with normal n, summed onto E.
+vec3 inject_sumLights(vec3 E, vec3 pWorld, vec3 pVoxel, vec3 n) {
+    for (int i = uLightFirst; i < uLightEnd; ++i) E += inject_lightIrradiance(i, pWorld, pVoxel, n);
+    return E;
+}
+
+// What the previous dispatches summed (zero for the first), and whether this dispatch only
+// carries its sum to the next one.
+#ifdef LIGHT_BATCHES
+#define INJECT_PREVIOUS(image, v) (uLightFirst > 0 ? imageLoad(image, v).rgb : vec3(0.0))
+#define INJECT_CARRY(image, v, E) if (!uLastBatch) imageStore(image, v, vec4(E, 0.0));
+#define INJECT_IS_LAST uLastBatch
+#else
+#define INJECT_PREVIOUS(image, v) vec3(0.0)
+#define INJECT_CARRY(image, v, E)
+#define INJECT_IS_LAST true
+#endif
+
 void main() {
     ivec3 v = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(v, uResolution))) return;
     float alpha = texelFetch(uOpacity, v, 0).r;
     if (alpha <= 0.0) {
-        imageStore(outRadiance, v, vec4(0.0));
+        if (INJECT_IS_LAST) imageStore(outRadiance, v, vec4(0.0));
         return;
     }
     vec3 albedo = texelFetch(uAlbedo, v, 0).rgb;
@@ -158,11 +190,11 @@ void main() {
     vec4 twoSided = texelFetch(uTwoSided, v, 0);
     if (twoSided.w >= VOX_TWO_SIDED_SHARE && dot(twoSided.xyz, twoSided.xyz) > 0.25) {
         vec3 front = normalize(twoSided.xyz);
-        vec3 Ef = vec3(0.0), Eb = vec3(0.0);
-        for (int i = 0; i < uLightCount; ++i) {
-            Ef += inject_lightIrradiance(i, pWorld, pVoxel, front);
-            Eb += inject_lightIrradiance(i, pWorld, pVoxel, -front);
-        }
+        vec3 Ef = inject_sumLights(INJECT_PREVIOUS(ioIrradiance, v), pWorld, pVoxel, front);
+        vec3 Eb = inject_sumLights(INJECT_PREVIOUS(ioIrradianceBack, v), pWorld, pVoxel, -front);
+        INJECT_CARRY(ioIrradiance, v, Ef)
+        INJECT_CARRY(ioIrradianceBack, v, Eb)
+        if (!INJECT_IS_LAST) return;
         vec3 Lf = min(L + albedo / PI * Ef, vec3(RADIANCE_MAX)), Lb = min(L + albedo / PI * Eb, vec3(RADIANCE_MAX));
         float k = vox_twoSidedNormalScale(Lf, Lb);
         imageStore(outNormal, v, vec4(front * k, 1.0));
@@ -171,8 +203,9 @@ void main() {
     }
 #endif
     vec3 n = texelFetch(uNormal, v, 0).xyz;
-    vec3 E = vec3(0.0);
-    for (int i = 0; i < uLightCount; ++i) E += inject_lightIrradiance(i, pWorld, pVoxel, n);
+    vec3 E = inject_sumLights(INJECT_PREVIOUS(ioIrradiance, v), pWorld, pVoxel, n);
+    INJECT_CARRY(ioIrradiance, v, E)
+    if (!INJECT_IS_LAST) return;
     L += albedo / PI * E;
     L = min(L, vec3(RADIANCE_MAX));
     imageStore(outRadiance, v, vec4(L * alpha, alpha));

@@ -1,5 +1,6 @@
 #include "voxelize/voxelize.h"
 
+#include "common/loop_budget.h"
 #include "core/errors.h"
 #include "gl/program_cache.h"
 #include "voxelize/voxel_gl.h"
@@ -8,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace vct {
@@ -38,6 +40,19 @@ void dispatchGrid(const glm::ivec3& size) {
 
 }  // namespace
 
+int injectLightsPerDispatch(const glm::ivec3& resolution, int outerLevels, int outerResolution, bool twoSided,
+                            int requested) {
+    // inject.glsl's loops for one light and one face: the light loop's own iteration; the
+    // walk's two set-up loops over the axes (6) and its cells (at most the three axes' voxels
+    // + 3); each outer level's loop, exit distance (3) and walk through it.
+    const long long walk = 6 + resolution.x + resolution.y + resolution.z + 3;
+    const long long outerWalk = 1 + 3 + 6 + 3LL * outerResolution + 3;
+    const long long perLight = (twoSided ? 2 : 1) * (1 + walk + outerLevels * outerWalk);
+    const long long fit = std::max<long long>(1, gpu::SHADER_LOOP_BUDGET / perLight);
+    const long long lights = requested > 0 ? std::min<long long>(fit, requested) : fit;
+    return int(std::min<long long>(lights, std::numeric_limits<int>::max()));
+}
+
 void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scene,
                     const ParamMap& params, PassTimer& timer, const std::vector<const VoxelGrid*>& outerLevels,
                     const std::string& scopeName) {
@@ -61,8 +76,13 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
             o->resolution.x != outerLevels.front()->resolution.x)
             throw InternalError("injectRadiance", "outer levels must be voxelized cubic grids of one size");
     const bool twoSided = bool(grid.twoSided);
-    const GLuint p = cachedProgram(injectProgramKey(format, int(outerLevels.size()), twoSided));
     const glm::ivec3 res = grid.resolution;
+    const int outerRes = outerLevels.empty() ? 0 : outerLevels.front()->resolution.x;
+    const int perDispatch = injectLightsPerDispatch(res, int(outerLevels.size()), outerRes, twoSided,
+                                                    settings.dispatchLights);
+    const int lightCount = gpuScene.lightCount;
+    const bool batched = lightCount > perDispatch;
+    const GLuint p = cachedProgram(injectProgramKey(format, int(outerLevels.size()), twoSided, batched));
     grid.radiance = createTexture3D(format, res.x, res.y, res.z, grid.levels);
 
     auto scope = timer.scope(scopeName, true, Reruns::WhenSceneChanges);
@@ -80,10 +100,20 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
         glBindTextureUnit(4, grid.twoSided.id());
         bindImage3D(1, grid.normal.id(), 0, GL_WRITE_ONLY, GL_RGBA16F);
     }
+    // The irradiance one dispatch carries to the next when the lights take several (float, so
+    // the sums are those of one dispatch bit for bit); freed when the pass ends.
+    GlTexture irradiance, irradianceBack;
+    if (batched) {
+        irradiance = createTexture3D(GL_RGBA32F, res.x, res.y, res.z, 1);
+        bindImage3D(2, irradiance.id(), 0, GL_READ_WRITE, GL_RGBA32F);
+        if (twoSided) {
+            irradianceBack = createTexture3D(GL_RGBA32F, res.x, res.y, res.z, 1);
+            bindImage3D(3, irradianceBack.id(), 0, GL_READ_WRITE, GL_RGBA32F);
+        }
+    }
     setUniform(p, "uResolution", res);
     setUniform(p, "uGridOrigin", grid.origin);
     setUniform(p, "uVoxelSize", grid.voxelSize);
-    setUniform(p, "uLightCount", gpuScene.lightCount);
     setUniform(p, "uShadowOffset", offset);
     for (size_t k = 0; k < outerLevels.size(); ++k) {
         const VoxelGrid& o = *outerLevels[k];
@@ -94,15 +124,23 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
                            o.origin.z, o.voxelSize);
     }
     if (!outerLevels.empty()) {
-        setUniform(p, "uOuterResolution", outerLevels.front()->resolution.x);
+        setUniform(p, "uOuterResolution", outerRes);
         setUniform(p, "uOuterCount", int(outerLevels.size()));
     }
     glUseProgram(p);
-    dispatchGrid(res);
+    int first = 0;
+    do {
+        const int end = batched ? std::min(lightCount, first + perDispatch) : lightCount;
+        setUniform(p, "uLightFirst", first);
+        setUniform(p, "uLightEnd", end);
+        if (batched) setUniform(p, "uLastBatch", int(end == lightCount));
+        dispatchGrid(res);
+        first = end;
+    } while (first < lightCount);
 
     for (GLuint u = 0; u < 5; ++u) glBindTextureUnit(u, 0);
     for (size_t k = 0; k < outerLevels.size(); ++k) glBindTextureUnit(GLuint(outerUnit + k), 0);
-    for (GLuint u = 0; u < 2; ++u) glBindImageTexture(u, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    for (GLuint u = 0; u < 4; ++u) glBindImageTexture(u, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
     glUseProgram(0);
     grid.memoryBytes = voxelGridMemoryBytes(grid);
 }

@@ -27,11 +27,12 @@ ProgramKey resolveProgramKey(bool hasEmission, GLenum emissionFormat, bool twoSi
     return computeProgramKey("voxelize/resolve.glsl", d);
 }
 
-ProgramKey injectProgramKey(GLenum radianceFormat, int outerLevels, bool twoSided) {
+ProgramKey injectProgramKey(GLenum radianceFormat, int outerLevels, bool twoSided, bool lightBatches) {
     ShaderDefines d = {{"RADIANCE_FORMAT", glslImageFormat(radianceFormat)},
                        {"RADIANCE_FORMAT_MAX", formatMaxLiteral(radianceFormat)}};
     if (outerLevels > 0) d.push_back({"OUTER_LEVELS", std::to_string(outerLevels)});
     if (twoSided) d.push_back({"TWO_SIDED", "1"});
+    if (lightBatches) d.push_back({"LIGHT_BATCHES", "1"});
     return computeProgramKey("voxelize/inject.glsl", d);
 }
 
@@ -68,7 +69,8 @@ std::vector<ProgramKey> voxelProgramVariants() {
             for (bool twoSided : {false, true}) v.push_back(resolveProgramKey(emission, f, twoSided));
     for (GLenum f : radianceFormats)
         for (int outer = 0; outer <= 7; ++outer)
-            for (bool twoSided : {false, true}) v.push_back(injectProgramKey(f, outer, twoSided));
+            for (bool twoSided : {false, true})
+                for (bool batches : {false, true}) v.push_back(injectProgramKey(f, outer, twoSided, batches));
     v.push_back(isotropicMipProgramKey(0, false));
     for (GLenum f : radianceFormats)
         for (bool normals : {false, true}) v.push_back(isotropicMipProgramKey(f, normals));

@@ -17,8 +17,9 @@ ProgramKey voxelizeProgramKey(bool emissionPass, bool bigPass, bool twoSided, bo
 // `opacityOnly`: opacity alone (an AO grid).
 ProgramKey resolveProgramKey(bool hasEmission, GLenum emissionFormat, bool twoSided, bool opacityOnly = false);
 // inject.glsl: radiance in `radianceFormat`; `outerLevels` clipmap levels continue shadow rays;
-// `twoSided`: two-sided voxels lit on each face (voxelize_shared.h).
-ProgramKey injectProgramKey(GLenum radianceFormat, int outerLevels, bool twoSided);
+// `twoSided`: two-sided voxels lit on each face (voxelize_shared.h); `lightBatches`: one of
+// several dispatches that each sum a slice of the lights (injectLightsPerDispatch).
+ProgramKey injectProgramKey(GLenum radianceFormat, int outerLevels, bool twoSided, bool lightBatches);
 // mip_iso.glsl: opacity, and radiance (radianceFormat != 0) and normals when the grid has them.
 ProgramKey isotropicMipProgramKey(GLenum radianceFormat, bool normals);
 // mip_aniso.glsl: one directional level from `srcFormat` (GL_R16F: the opacity base level);

@@ -13,6 +13,7 @@ enum class VoxelPrecision { Auto, Half, Float };
 struct VoxelSettings {
     VoxelPrecision precision = VoxelPrecision::Auto;
     float injectOffset = 2.f;  // voxels along the normal where injection's shadow rays start
+    int dispatchLights = 0;    // at most this many lights per injection dispatch; 0 = the loop budget's
 };
 const SettingsTable<VoxelSettings>& voxelSettings();
 

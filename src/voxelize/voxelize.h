@@ -7,7 +7,8 @@
 //   (grid.radiance stays empty - id 0 - and buildMips builds opacity mips only; anisotropic
 //   textures then carry rgb = 0 and the directional opacity in alpha.)
 //
-// Keys, defaults, ranges and docs: voxelSettings() (vct.voxel.precision, vct.inject.offset).
+// Keys, defaults, ranges and docs: voxelSettings() (vct.voxel.precision, vct.inject.offset,
+// vct.inject.dispatch-lights).
 #pragma once
 
 #include "core/gpu_scene.h"
@@ -39,11 +40,20 @@ VoxelGrid voxelizeScene(const GpuScene& scene, const Bounds3& region, int voxelR
 VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& params, PassTimer& timer,
                        const std::string& scopeName = "voxelize", bool lit = true, bool attributes = true);
 
+// Lights per injection dispatch: as many as the loop budget (common/loop_budget.h) holds
+// lights whose shadow walks may each cross this grid (`resolution`) and `outerLevels` outer
+// levels of `outerResolution` voxels, twice for `twoSided` grids; at least 1, at most
+// `requested` when it is > 0 (vct.inject.dispatch-lights). More lights than this split the
+// pass over dispatches that carry the irradiance summed so far.
+int injectLightsPerDispatch(const glm::ivec3& resolution, int outerLevels, int outerResolution, bool twoSided,
+                            int requested);
+
 // Writes grid.radiance level 0: premultiplied (L * opacity, opacity), where L = emission +
 // albedo / pi * sum of the punctual lights' irradiance on the voxel's average normal, each
 // with visibility from a ray marched through the opacity grid (glTF KHR_lights_punctual
 // units). Further bounces are cone/cone_bounce.h's (traceVoxelBounces). Call buildMips
-// afterwards. Timer scope "inject".
+// afterwards. Timer scope "inject". More lights than injectLightsPerDispatch allows take
+// several dispatches, with the same sums.
 //
 // `outerLevels` (clipmaps, src/clipmap): voxelized coarser grids that contain this one,
 // innermost first (at most 7, cubic, of this grid's resolution); shadow rays leaving this
