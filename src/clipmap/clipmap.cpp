@@ -173,6 +173,7 @@ nlohmann::json clipmapStats(const Clipmap& cm) {
                           {"extent", float(cm.layout.resolution) * g.voxelSize},
                           {"voxel_size", g.voxelSize},
                           {"occupied", g.occupiedVoxels},
+                          {"inject_dispatches", g.injectDispatches},
                           {"memory_bytes", g.memoryBytes},
                           {"time_ms", cm.levelMs.empty() ? 0.0 : cm.levelMs[size_t(l)]}});
     }

@@ -186,6 +186,7 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
                    {"grid_min", {g.origin.x, g.origin.y, g.origin.z}},
                    {"grid_max", {hi.x, hi.y, hi.z}},
                    {"occupied", g.occupiedVoxels},
+                   {"inject_dispatches", g.injectDispatches},
                    {"memory_bytes", g.memoryBytes},
                    {"mips", g.anisotropic ? "anisotropic" : "isotropic"},
                    {"level_opacity", g.depthLevels ? "depth" : "alpha"},

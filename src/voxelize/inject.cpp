@@ -129,12 +129,14 @@ void injectRadiance(VoxelGrid& grid, const GpuScene& gpuScene, const Scene& scen
     }
     glUseProgram(p);
     int first = 0;
+    grid.injectDispatches = 0;
     do {
         const int end = batched ? std::min(lightCount, first + perDispatch) : lightCount;
         setUniform(p, "uLightFirst", first);
         setUniform(p, "uLightEnd", end);
         if (batched) setUniform(p, "uLastBatch", int(end == lightCount));
         dispatchGrid(res);
+        ++grid.injectDispatches;
         first = end;
     } while (first < lightCount);
 

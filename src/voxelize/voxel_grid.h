@@ -61,6 +61,8 @@ struct VoxelGrid {
 
     size_t memoryBytes = 0;  // GPU memory of all textures above
     size_t occupiedVoxels = 0;  // voxels with opacity > 0 at level 0 (filled by voxelize)
+    // Dispatches injectRadiance split the lights over (injectLightsPerDispatch); 0 until injected.
+    int injectDispatches = 0;
 };
 
 // Fits a grid with cubic voxels to `bounds` (padded by one voxel on each side so surfaces

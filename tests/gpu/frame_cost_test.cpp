@@ -224,4 +224,17 @@ TEST(FrameCost, ConeCountersFollowTheShadersFetchRules) {
     EXPECT_EQ(lanes["dispatches"], 1);
     EXPECT_EQ(counters("vct", "none", {"vct.lanes=4", "vct.dispatch-cones=5"})["dispatches"], 5);  // 24 cones
     EXPECT_EQ(vdb["dispatches"], 0);
+    // Injection reports its dispatches too: one where the lights fit, one per light at
+    // vct.inject.dispatch-lights=1; an AO-only grid is not lit.
+    const auto injectDispatches = [&](const std::vector<std::string>& params, bool gi = true) {
+        RenderRequest r = cornellRequest(scene);
+        r.ao = gi ? "none" : "vct";
+        r.gi = gi ? "vct" : "none";
+        for (const std::string& p : params) r.params.set(p);
+        return session.render(r).extra.at("voxels").at("inject_dispatches").get<int>();
+    };
+    ASSERT_GE(scene.lights.size(), 1u);
+    EXPECT_EQ(injectDispatches({}), 1);
+    EXPECT_EQ(injectDispatches({"vct.inject.dispatch-lights=1"}), int(scene.lights.size()));
+    EXPECT_EQ(injectDispatches({}, false), 0);
 }

@@ -590,6 +590,8 @@ TEST(Inject, LightsSplitOverDispatchesGiveTheSameBytes) {
         PassTimer timer;
         injectRadiance(g, gpu, t.scene, params, timer);
         GlContext::shared().checkErrors("inject in slices");
+        // 7 lights: one dispatch, 7 of one light, 4 of two (the last holds one).
+        EXPECT_EQ(g.injectDispatches, perDispatch == 0 ? 1 : perDispatch == 1 ? 7 : 4);
         const std::array<std::vector<uint8_t>, 2> bytes = {readRawBytes(g.radiance, GL_RGBA, GL_FLOAT, 16),
                                                            readRawBytes(g.normal, GL_RGBA, GL_FLOAT, 16)};
         if (perDispatch == 0) {
@@ -628,10 +630,15 @@ TEST(Inject, ThousandsOfLightsSumAsTheirTotal) {
         GpuScene gpu = upload(scene);
         VoxelGrid g = voxelize(scene, gpu, 48);
         // Each light's walks can cross the grid, so the lights need several dispatches.
-        if (lights == count) EXPECT_GT(count, 2 * injectLightsPerDispatch(g.resolution, 0, 0, false, 0));
+        if (lights == count) {
+            EXPECT_GT(count, 2 * injectLightsPerDispatch(g.resolution, 0, 0, false, 0));
+        }
         PassTimer timer;
         injectRadiance(g, gpu, scene, ParamMap(), timer);
         GlContext::shared().checkErrors("inject many lights");
+        if (lights == count) {
+            EXPECT_GT(g.injectDispatches, 2);
+        }
         return readVolume(g.radiance, 0, 4);
     };
     const Volume one = inject(1), many = inject(count);
