@@ -32,12 +32,6 @@ bool radianceNeedsFloat(const VoxelGrid& grid, const Scene& scene) {
     return false;
 }
 
-void dispatchGrid(const glm::ivec3& size) {
-    const int g = gpu::VOX_GRID_GROUP;
-    glDispatchCompute(groupCount(size.x, g), groupCount(size.y, g), groupCount(size.z, g));
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-}
-
 }  // namespace
 
 int injectLightsPerDispatch(const glm::ivec3& resolution, int outerLevels, int outerResolution, bool twoSided,

@@ -16,12 +16,6 @@ namespace {
 
 glm::ivec3 levelSize(const glm::ivec3& base, int level) { return glm::max(base >> level, glm::ivec3(1)); }
 
-void dispatchGrid(const glm::ivec3& size) {
-    const int g = gpu::VOX_GRID_GROUP;
-    glDispatchCompute(groupCount(size.x, g), groupCount(size.y, g), groupCount(size.z, g));
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-}
-
 // GI grids filter their normals too: the facing test (vox_facingWeight) reads them at every
 // level the cones sample.
 bool filtersNormals(const VoxelGrid& grid) {

@@ -1,12 +1,20 @@
 #include "voxelize/voxel_gl.h"
 
 #include "core/errors.h"
+#include "gl/program.h"
 #include "voxelize/voxelize.h"
+#include "voxelize/voxelize_shared.h"
 
 #include <algorithm>
 #include <stdexcept>
 
 namespace vct {
+
+void dispatchGrid(const glm::ivec3& size) {
+    const int g = gpu::VOX_GRID_GROUP;
+    glDispatchCompute(groupCount(size.x, g), groupCount(size.y, g), groupCount(size.z, g));
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
 
 void setUniform(GLuint program, const char* name, int v) {
     glProgramUniform1i(program, glGetUniformLocation(program, name), v);

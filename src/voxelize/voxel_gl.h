@@ -9,6 +9,10 @@
 
 namespace vct {
 
+// Runs the bound compute program over a grid of `size` voxels in VOX_GRID_GROUP^3 work groups,
+// then makes its image writes visible to the next pass's image loads and texture fetches.
+void dispatchGrid(const glm::ivec3& size);
+
 // Binds `level` of a 3D texture (all layers) to an image unit.
 inline void bindImage3D(GLuint unit, GLuint texture, int level, GLenum access, GLenum format) {
     glBindImageTexture(unit, texture, level, GL_TRUE, 0, access, format);
