@@ -46,7 +46,12 @@ void declareVoxelPasses(const PlanContext& ctx, PassDeclarations& d) {
     else
         d.add({kPassInject, {kVoxels}, {kVoxelRadiance},
                "direct light and emission into the voxels, then vct.bounces diffuse bounces between them (dense "
-               "grid; timed as 'bounce')"});
+               "grid; timed as 'bounce')" +
+                   // The split depends on the fitted grid, known once it is voxelized.
+                   (ctx.scene.lights > 1 ? "; " + std::to_string(ctx.scene.lights) +
+                                               " lights over as many dispatches as the loop budget needs "
+                                               "(vct.inject.dispatch-lights; --stats: voxels.inject_dispatches)"
+                                         : std::string())});
     std::vector<ResourceId> mipReads{kVoxels};
     if (radiance) mipReads.push_back(kVoxelRadiance);
     const ConeSettings cone = readConeSettings(r.params);

@@ -20,18 +20,6 @@ nlohmann::json readJson(const std::string& path) {
     return nlohmann::json::parse(in);
 }
 
-// Mean of channel-averaged values over a rectangle given in fractions of the image.
-double regionMean(const vct::Image& img, double x0, double y0, double x1, double y1) {
-    double sum = 0;
-    int n = 0;
-    for (int y = int(y0 * img.height); y < int(y1 * img.height); ++y)
-        for (int x = int(x0 * img.width); x < int(x1 * img.width); ++x) {
-            for (int c = 0; c < std::min(3, img.channels); ++c) sum += img.at(x, y, c);
-            n += std::min(3, img.channels);
-        }
-    return sum / n;
-}
-
 }  // namespace
 
 TEST(RenderCli, CornellBoxRegionsAreDistinct) {
@@ -144,6 +132,15 @@ TEST(RenderCli, ExplainPrintsRunAndSkippedPasses) {
     EXPECT_NE(r.output.find("passes to run:"), std::string::npos);
     EXPECT_NE(r.output.find("passes left out:"), std::string::npos);
     EXPECT_NE(r.output.find("voxelize: no method reads voxels"), std::string::npos) << r.output;
+    // Injection says its lights may take several dispatches where there is more than one.
+    const std::string split = "lights over as many dispatches as the loop budget needs";
+    auto one = runVct("render scenes/cornell_box.gltf --size 16 --gi vct --voxel-res 16 --explain -o " + dir + "/c.png");
+    ASSERT_EQ(one.exitCode, 0) << one.output;
+    EXPECT_NE(one.output.find("inject: direct light"), std::string::npos) << one.output;
+    EXPECT_EQ(one.output.find(split), std::string::npos) << one.output;
+    auto two = runVct("render scenes/default.gltf --size 16 --gi vct --voxel-res 16 --explain -o " + dir + "/d.png");
+    ASSERT_EQ(two.exitCode, 0) << two.output;
+    EXPECT_NE(two.output.find("2 " + split), std::string::npos) << two.output;
 }
 
 TEST(RenderCli, BadInputFailsCleanlyWithoutOutput) {
