@@ -40,7 +40,8 @@ ConeMarch cone_uniformMarch() {
 
 // The cone set around shading normal n: sum_c w_c * (cone result) integrates the cosine lobe.
 // Cones whose axis is below the geometric plane are closed (as in the AO definition, directions below
-// the geometric normal count as occluded).
+// the geometric normal count as occluded), every lane of them; a lane below it of a cone
+// above it is open (cone_laneState).
 struct ConeGather {
     vec3 radiance;    // sum_c w_c * (radiance_c + (1 - alpha_c) * sky)
     float occlusion;  // sum_c w_c * alpha_c
@@ -109,8 +110,14 @@ ConeGather cone_gatherVoxel(ConeGather g, vec3 p, vec3 n, vec3 ng, float offset,
         vec4 cone = u.cones[c];
         vec3 d = normalize(frame * cone.xyz);
         float rise = dot(d, ng);
-        if (rise <= 0.0) {
+        float axisRise = u.lanes.x > 1 ? dot(frame * u.coneAxes[cone_laneCone(u.lanes.y + c, u.lanes.x)].xyz, ng) : rise;
+        int state = cone_laneState(rise, axisRise);
+        if (state == CONE_LANE_CLOSED) {
             g.occlusion += cone.w;
+            continue;
+        }
+        if (state == CONE_LANE_OPEN) {
+            g.radiance += cone.w * sky;
             continue;
         }
         ConeResult r = cone_marchVolume(m, origin, d, h0, rise, maxDist, falloff);

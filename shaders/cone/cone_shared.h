@@ -23,6 +23,9 @@ VCT_CONST int CONE_LOCAL_SIZE = 8;
 // fit one dispatch marches them over several (CONE_LOOP_BUDGET), so this bounds cost, not the
 // uniform block: 64 lanes of the 64-cone set, or 256 lanes (auto at 512^3) of the 16-cone one.
 VCT_CONST int CONE_MAX_CONES = 4096;
+// Cones in a set (vct.cones) before it is split into lanes: the uniform block holds their axes,
+// which decide whether a lane below the surface's plane is open (src/cone/cone_set.h).
+VCT_CONST int CONE_MAX_SET_CONES = 64;
 // Cones in the uniform block: the slice of the set one dispatch marches. 512 vec4 = 8 KiB,
 // half of the 16 KiB GL 4.5 guarantees.
 VCT_CONST int CONE_BLOCK_CONES = 512;
@@ -157,8 +160,26 @@ struct ConeUniforms {
     ivec4 trace;           // pixel passes: x = trace scale (vct.trace-scale), y = stage (CONE_STAGE_*),
                            // z = the own stage's first list entry (dispatches of at most 65535 groups),
                            // w = split gathers (CONE_SPLIT_RESUME | CONE_SPLIT_CARRY; 0 = whole)
+    ivec4 lanes;           // x = lanes per cone of the set, y = the set-wide index of cones[0] (this slice's first)
+    vec4 coneAxes[CONE_MAX_SET_CONES];  // the set's cones before the lanes (xyz = direction, tangent frame)
     vec4 cones[CONE_BLOCK_CONES];  // xyz = direction in the tangent frame (z = normal), w = weight
 };
+
+// How a gather takes a lane, from `rise` = dot(lane, ng) and `axisRise` = dot(its cone's axis,
+// ng) (ng the geometric normal): a cone whose axis is below the surface's plane is closed,
+// every lane of it; a lane below the plane of a cone above it is open, not marched (a cone
+// never sees the surface it starts from, and the cone model counts those directions open:
+// src/cone/cone_set.h); the others are marched. One lane a cone is the cone itself
+// (axisRise = rise).
+VCT_CONST int CONE_LANE_CLOSED = 0;
+VCT_CONST int CONE_LANE_OPEN = 1;
+VCT_CONST int CONE_LANE_MARCHED = 2;
+CONE_FN int cone_laneState(float rise, float axisRise) {
+    if (axisRise <= 0.0f) return CONE_LANE_CLOSED;
+    return rise > 0.0f ? CONE_LANE_MARCHED : CONE_LANE_OPEN;
+}
+// The set's cone of lane `lane` (set-wide index; lanes of a cone are consecutive).
+CONE_FN int cone_laneCone(int lane, int lanesPerCone) { return lane / max(lanesPerCone, 1); }
 
 // Weights of the three directional textures a cone of unit direction d blends: d^2 sums to
 // |d|^2 = 1, so a uniform medium keeps its opacity (abs(d) sums to up to sqrt(3) and

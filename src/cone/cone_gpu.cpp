@@ -61,6 +61,8 @@ gpu::ConeUniforms coneUniforms(bool gi, const VoxelGrid& grid, float maxDistWorl
     const size_t first = std::min(lanes.cones.size(), size_t(gpu::CONE_BLOCK_CONES));
     u.config = glm::ivec4(int(first), gi ? gpu::CONE_AO_LINEAR : int(settings.aoMapping), 0, 0);
     for (size_t i = 0; i < first; ++i) u.cones[i] = lanes.cones[i];
+    u.lanes = glm::ivec4(lanes.lanesPerCone, 0, 0, 0);
+    for (size_t i = 0; i < lanes.axes.size(); ++i) u.coneAxes[i] = lanes.axes[i];
     u.trace = glm::ivec4(settings.traceScale, gpu::CONE_STAGE_TRACE, 0, 0);
     return u;
 }
@@ -82,6 +84,9 @@ void loadConeSlice(GLuint ubo, const ConeSlices& slices, int i) {
                          &slices.cones[first]);
     const GLint count = GLint(n);
     glNamedBufferSubData(ubo, GLintptr(offsetof(gpu::ConeUniforms, config)), sizeof(count), &count);
+    const GLint firstLane = GLint(first);
+    glNamedBufferSubData(ubo, GLintptr(offsetof(gpu::ConeUniforms, lanes) + sizeof(GLint)), sizeof(firstLane),
+                         &firstLane);
     const GLint split = (i > 0 ? gpu::CONE_SPLIT_RESUME : 0) | (i + 1 < slices.count() ? gpu::CONE_SPLIT_CARRY : 0);
     glNamedBufferSubData(ubo, GLintptr(offsetof(gpu::ConeUniforms, trace) + 3 * sizeof(GLint)), sizeof(split),
                          &split);

@@ -46,10 +46,15 @@ std::vector<glm::vec4> diffuseConeSet(int coneCount) {
 }
 
 ConeLanes coneLanes(const std::vector<glm::vec4>& set, float apertureDeg, int lanes) {
+    if (set.size() > size_t(gpu::CONE_MAX_SET_CONES))
+        throw InternalError("coneLanes", std::to_string(set.size()) + " cones exceed " +
+                                             std::to_string(gpu::CONE_MAX_SET_CONES));
     if (lanes < 1 || size_t(lanes) * set.size() > size_t(gpu::CONE_MAX_CONES))
         throw InternalError("coneLanes", std::to_string(lanes) + " lanes x " + std::to_string(set.size()) +
                                              " cones exceed " + std::to_string(gpu::CONE_MAX_CONES));
     ConeLanes out;
+    out.lanesPerCone = lanes;
+    out.axes = set;
     if (lanes == 1) {
         out.cones = set;
         out.apertureDeg = apertureDeg;

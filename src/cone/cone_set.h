@@ -31,9 +31,17 @@ std::vector<glm::vec4> diffuseConeSet(int coneCount);
 // it touches, a thin sheet's trilinear tent lets light through. Lanes whose footprint at R
 // stays a fixed number of voxels as the grid refines (lanes ~ resolution^2) make each lane
 // resolve what the cone only averaged, so the march approaches the cone's exact visibility.
+//
+// A lane below the surface's geometric plane is open when its cone's axis is above it: the
+// part of a cone below the plane is open (a cone never sees the surface it starts from, and
+// the cone model, reference/cone_model.h, counts those directions open), and a cone whose
+// axis is below the plane is closed, every lane of it. The lanes of cone c are
+// cones[c * lanesPerCone, (c + 1) * lanesPerCone), so a march finds a lane's cone by index.
 struct ConeLanes {
     std::vector<glm::vec4> cones;  // xyz = direction (tangent frame), w = weight; sum of w = 1
     float apertureDeg = 0.f;       // each lane's full aperture
+    int lanesPerCone = 1;
+    std::vector<glm::vec4> axes;   // the set's cones, whose axes decide a lane below the plane
 };
 ConeLanes coneLanes(const std::vector<glm::vec4>& set, float apertureDeg, int lanes);
 

@@ -258,7 +258,7 @@ std::vector<double> vctAt(const AoConvergenceCase& c, int voxelRes, const std::s
     // GI's points have albedo 1: their indirect light is the light they gather.
     const glm::vec3 albedo = gi ? glm::vec3(1.f) : glm::vec3(0.7f);
     std::vector<GBufferPoint> pts;
-    for (const glm::vec3& p : c.points) pts.push_back({p, glm::vec3(0, 1, 0), glm::vec3(0, 1, 0), albedo, true});
+    for (const glm::vec3& p : c.points) pts.push_back({p, c.shadingNormal, glm::vec3(0, 1, 0), albedo, true});
     for (size_t i = 0; i < c.visiblePoints.size(); ++i)
         pts.push_back({c.visiblePoints[i], c.visibleNormals[i], c.visibleNormals[i], glm::vec3(0.5f), true});
     const int width = int(pts.size());

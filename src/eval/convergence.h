@@ -30,7 +30,10 @@ struct AoConvergenceCase {
     float radius = 1.f;  // R
     Scene scene;         // the floor and the occluders as triangles
     AnalyticOccluders occluders;          // the same occluders, exactly
-    std::vector<glm::vec3> points;        // scored points on the floor (normal +Y)
+    // Scored points on the floor (geometric normal +Y); exactAoAt and coneModelAoAt score them
+    // with the shading normal +Y too.
+    std::vector<glm::vec3> points;
+    glm::vec3 shadingNormal{0.f, 1.f, 0.f};  // the points' shading normal (the harness's cases: +Y)
     std::vector<glm::vec3> visiblePoints; // on screen: points on the occluders' surfaces (not scored)
     std::vector<glm::vec3> visibleNormals;
     bool onScreen = false;

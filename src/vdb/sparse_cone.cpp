@@ -36,6 +36,8 @@ struct MarchParams {
     glm::vec3 res;
     std::vector<glm::vec3> levelScale;  // level texel coordinates per voxel unit: size_k / res
     std::vector<glm::vec4> cones;       // the set's lanes (coneMarchLanes)
+    std::vector<glm::vec4> axes;        // the set's cones (ConeLanes::axes)
+    int lanesPerCone = 1;
 };
 
 // One thread's view of the levels: the volume of gpu::cone_marchVolume.
@@ -180,19 +182,30 @@ struct Gather {
     float samples = 0.f;  // volume samples of all its cones
 };
 
-// cone_gatherVoxel from voxel-space p: the cones start `offset` voxels along ng, `h0` is that
+// cone_gatherVoxel from voxel-space p over the march's lanes: the cones start `offset` voxels along ng, `h0` is that
 // start's height above the tangent plane for the plane limit.
-Gather gatherVoxel(LevelSampler& sampler, const std::vector<glm::vec4>& cones, const glm::vec3& p,
+Gather gatherVoxel(LevelSampler& sampler, const glm::vec3& p,
                    const glm::vec3& n, const glm::vec3& ng, float offset, float h0, float maxDist, float falloff,
                    float sky) {
     const glm::mat3 frame = gpu::frame_fromZ(n);
     const glm::vec3 origin = p + ng * offset;
     Gather g;
-    for (const glm::vec4& cone : cones) {
+    const MarchParams& mp = *sampler.mp;
+    for (size_t c = 0; c < mp.cones.size(); ++c) {
+        const glm::vec4& cone = mp.cones[c];
         const glm::vec3 d = glm::normalize(frame * glm::vec3(cone));
         const float rise = glm::dot(d, ng);
-        if (rise <= 0.f) {
+        const float axisRise =
+            mp.lanesPerCone > 1
+                ? glm::dot(frame * glm::vec3(mp.axes[size_t(gpu::cone_laneCone(int(c), mp.lanesPerCone))]), ng)
+                : rise;
+        const int state = gpu::cone_laneState(rise, axisRise);
+        if (state == gpu::CONE_LANE_CLOSED) {
             g.occlusion += cone.w;
+            continue;
+        }
+        if (state == gpu::CONE_LANE_OPEN) {
+            g.radiance += cone.w * sky;
             continue;
         }
         const gpu::ConeResult r = gpu::cone_marchVolume(sampler, sampler.mp->march, origin, d, h0, rise, maxDist, falloff);
@@ -204,18 +217,20 @@ Gather gatherVoxel(LevelSampler& sampler, const std::vector<glm::vec4>& cones, c
 }
 
 // The pixel cones' gather (cone_gather): from the surface point, offset and plane height alike.
-Gather gather(LevelSampler& sampler, const SparseVoxelScene& v, const std::vector<glm::vec4>& cones,
+Gather gather(LevelSampler& sampler, const SparseVoxelScene& v,
               const glm::vec3& pWorld, const glm::vec3& n, const glm::vec3& ng, float maxDist, float falloff,
               float sky) {
     const glm::vec3 p = glm::vec3(v.voxelFromWorld * glm::vec4(pWorld, 1.f));
     const float offset = sampler.mp->offset;
-    return gatherVoxel(sampler, cones, p, n, ng, offset, offset, maxDist, falloff, sky);
+    return gatherVoxel(sampler, p, n, ng, offset, offset, maxDist, falloff, sky);
 }
 
 MarchParams marchParams(const SparseVoxelScene& v, const ConeSettings& s) {
     MarchParams mp;
     const ConeLanes lanes = coneMarchLanes(s, std::max(v.resolution.x, std::max(v.resolution.y, v.resolution.z)));
     mp.cones = lanes.cones;
+    mp.axes = lanes.axes;
+    mp.lanesPerCone = lanes.lanesPerCone;
     mp.march.tanHalfAperture = std::tan(0.5f * lanes.apertureDeg * float(M_PI) / 180.f);
     mp.march.stepFactor = s.stepFactor;
     mp.march.maxAlpha = s.maxAlpha;
@@ -256,7 +271,6 @@ std::vector<float> sparseConeAO(const SparseVoxelScene& voxels, const std::vecto
     const float falloff = (settings.aoMapping == ConeAoMapping::Falloff && maxDist > 0.f)
                               ? gpu::CONE_FALLOFF_LAMBDA_R / maxDist
                               : 0.f;
-    const std::vector<glm::vec4>& cones = mp.cones;
     std::vector<float> ao(points.size(), 1.f);
     std::vector<double> samples(points.size(), 0.0), fetches(points.size(), 0.0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
@@ -265,7 +279,7 @@ std::vector<float> sparseConeAO(const SparseVoxelScene& voxels, const std::vecto
             glm::vec3 n, ng;
             if (!surface(points[i], n, ng)) continue;
             const double before = sampler.fetches;
-            const Gather g = gather(sampler, voxels, cones, points[i].position, n, ng, maxDist, falloff, 0.f);
+            const Gather g = gather(sampler, voxels, points[i].position, n, ng, maxDist, falloff, 0.f);
             ao[i] = std::clamp(1.f - g.occlusion, 0.f, 1.f);
             samples[i] = g.samples;
             fetches[i] = sampler.fetches - before;
@@ -287,7 +301,6 @@ std::vector<glm::vec3> sparseConeGI(const SparseVoxelScene& voxels, const std::v
     const MarchParams mp = marchParams(voxels, settings);
     // GI cones run until they leave the grid: twice the box diagonal bounds every path.
     const float maxDist = 2.f * glm::length(glm::vec3(voxels.resolution));
-    const std::vector<glm::vec4>& cones = mp.cones;
     std::vector<glm::vec3> gi(points.size(), glm::vec3(0.f));
     std::vector<double> samples(points.size(), 0.0), fetches(points.size(), 0.0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
@@ -296,7 +309,7 @@ std::vector<glm::vec3> sparseConeGI(const SparseVoxelScene& voxels, const std::v
             glm::vec3 n, ng;
             if (!surface(points[i], n, ng)) continue;
             const double before = sampler.fetches;
-            const Gather g = gather(sampler, voxels, cones, points[i].position, n, ng, maxDist, 0.f, sky);
+            const Gather g = gather(sampler, voxels, points[i].position, n, ng, maxDist, 0.f, sky);
             gi[i] = glm::max(points[i].albedo, glm::vec3(0.f)) * g.radiance;
             samples[i] = g.samples;
             fetches[i] = sampler.fetches - before;
@@ -360,7 +373,7 @@ void traceSparseBounces(SparseVoxelScene& voxels, float sky, const ConeSettings&
                     const glm::vec3 nn = glm::normalize(n);
                     const glm::vec3 centre = glm::vec3(ijk.x(), ijk.y(), ijk.z()) + 0.5f;
                     const Gather g =
-                        gatherVoxel(sampler, mp.cones, centre, nn, nn, mp.offset + 0.5f, mp.offset, maxDist, 0.f, sky);
+                        gatherVoxel(sampler, centre, nn, nn, mp.offset + 0.5f, mp.offset, maxDist, 0.f, sky);
                     const openvdb::Vec3s albedo = albedoAcc.getValue(ijk), L = it.getValue();
                     glm::vec3 out;
                     for (int c = 0; c < 3; ++c) out[c] = (L[c] / a + albedo[c] * g.radiance[c]) * a;

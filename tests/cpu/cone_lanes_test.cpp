@@ -2,6 +2,7 @@
 // cubic grid shape (vct/voxel_region.h) the convergent march runs on.
 #include "cone/cone_set.h"
 #include "cone/cone_settings.h"
+#include "cone/cone_shared.h"
 #include "core/errors.h"
 #include "eval/analytic_ao.h"
 #include "eval/convergence.h"
@@ -41,6 +42,9 @@ TEST(ConeLanes, LanesShareTheirConesWeightSolidAngleAndCap) {
     for (int lanes : {4, 16, 64}) {
         const ConeLanes l = coneLanes(set, 60.f, lanes);
         ASSERT_EQ(l.cones.size(), set.size() * size_t(lanes));
+        // The march finds a lane's cone by index (cone_laneCone) among the set's axes.
+        EXPECT_EQ(l.lanesPerCone, lanes);
+        EXPECT_EQ(l.axes, set);
         // Each lane: 1 / lanes of its cone's solid angle, 2 pi (1 - cos(alpha)).
         const double laneHalf = 0.5 * double(l.apertureDeg) * M_PI / 180.0;
         EXPECT_NEAR(double(lanes) * (1.0 - std::cos(laneHalf)), 1.0 - std::cos(alpha), 1e-6) << lanes;
@@ -49,6 +53,7 @@ TEST(ConeLanes, LanesShareTheirConesWeightSolidAngleAndCap) {
             double weight = 0.0, meanCos = 0.0;
             for (int i = 0; i < lanes; ++i) {
                 const glm::vec4& lane = l.cones[c * size_t(lanes) + size_t(i)];
+                EXPECT_EQ(gpu::cone_laneCone(int(c) * lanes + i, lanes), int(c));
                 EXPECT_NEAR(glm::length(glm::vec3(lane)), 1.f, 1e-5f);
                 const double theta = angleBetween(glm::vec3(lane), glm::vec3(set[c]));
                 EXPECT_LE(theta, alpha + 1e-5) << "lane " << i << " of cone " << c << " leaves its cap";

@@ -2,6 +2,8 @@
 // eval/convergence.h) as the grid refines, 32^3..128^3: the march with lanes that refine with
 // the grid on a cubic grid (vct.lanes=0, vct.grid=cube) against the default march, dense and
 // sparse. The finer grids and the full tables are bench_convergence's (docs/convergence.md).
+#include "common/tangent_frame.h"
+#include "cone/cone_set.h"
 #include "eval/convergence.h"
 #include "scene/scene_builder.h"
 #include "support/filter_precision.h"
@@ -59,6 +61,24 @@ void expectBackendsAgree(const ParamMap& p) {
     for (size_t i = 0; i < dense.size(); ++i)
         EXPECT_NEAR(sparse[i].voxel.at(64), dense[i].voxel.at(64), vcttest::filterTolerance(2e-3, 8e-3))
             << dense[i].name;
+}
+
+// A bare floor (AO 1 at any R) under one tiny triangle 1.98 above it, which makes the fitted
+// grid 127 (255) voxels tall at 128^3 (256^3); 35 points, some where a side cone of a tall
+// grid's coarse levels would close on the floor.
+AoConvergenceCase bareFloorUnderATallGrid() {
+    AoConvergenceCase c;
+    c.family = "floor";
+    c.name = "floor under a tall grid";
+    c.radius = 10.f;
+    SceneBuilder b("tall grid");
+    const int mat = b.addMaterial("floor", glm::vec3(0.7f));
+    b.addPlane("floor", glm::vec3(0.f), glm::vec2(2.f), mat);
+    b.addQuad("speck", glm::vec3(0.9f, 1.98f, 0.9f), glm::vec3(0.002f, 0.f, 0.f), glm::vec3(0.f, 0.f, 0.002f), mat);
+    c.scene = b.toScene();
+    for (float x : {-0.9f, -0.45f, 0.f, 0.33f, 0.41f, 0.49f, 0.8f})
+        for (float z : {-0.8f, -0.4f, 0.f, 0.45f, 0.8f}) c.points.emplace_back(x, 0.f, z);
+    return c;
 }
 
 }  // namespace
@@ -124,22 +144,33 @@ TEST(VctConvergence, SparseOpticalDepthLevelsMatchTheDenseOnes) {
 // measure those (cone_texelExtent), or the floor's own voxels reach the samples it keeps
 // clear: 1 - AO was up to 0.155 at 128^3, in a band of points a side cone closes on.
 TEST(VctConvergence, ABareFloorUnderATallGridStaysOpen) {
-    AoConvergenceCase c;
-    c.family = "floor";
-    c.name = "floor under a tall grid";
-    c.radius = 10.f;
-    SceneBuilder b("tall grid");
-    const int mat = b.addMaterial("floor", glm::vec3(0.7f));
-    b.addPlane("floor", glm::vec3(0.f), glm::vec2(2.f), mat);
-    b.addQuad("speck", glm::vec3(0.9f, 1.98f, 0.9f), glm::vec3(0.002f, 0.f, 0.f), glm::vec3(0.f, 0.f, 0.002f), mat);
-    c.scene = b.toScene();
-    for (float x : {-0.9f, -0.45f, 0.f, 0.33f, 0.41f, 0.49f, 0.8f})
-        for (float z : {-0.8f, -0.4f, 0.f, 0.45f, 0.8f}) c.points.emplace_back(x, 0.f, z);
+    const AoConvergenceCase c = bareFloorUnderATallGrid();
     for (int res : {64, 128}) {
         const std::vector<double> ao = vctAoAt(c, res, "gl", ParamMap());
         const double lowest = *std::min_element(ao.begin(), ao.end());
         std::cerr << res << "^3: lowest AO " << lowest << "\n";
         EXPECT_GT(lowest, 0.99) << "the floor occludes itself at " << res << "^3";
+    }
+}
+
+// Lanes take their cone's side of the surface's plane (cone_laneState, shaders/cone/cone_shared.h),
+// dense and sparse, over a march split into slices of 5 lanes (not a multiple of the 4 lanes a
+// cone: the pass finds each lane's cone from the slice's first lane). On the bare floor, 16
+// cones x 4 lanes: with the shading normal on the geometric one the floor is open (lanes closed
+// below the plane gave 0.978); tilted 40 degrees, whole cones fall below the plane and AO is
+// 1 minus their weight, computed here from the set.
+TEST(VctConvergence, LanesTakeTheirConesSideOfTheSurfacesPlane) {
+    AoConvergenceCase c = bareFloorUnderATallGrid();
+    const ParamMap p = params({"vct.cones=16", "vct.lanes=4", "vct.dispatch-cones=5"});
+    for (float tilt : {0.f, 0.7f}) {
+        c.shadingNormal = glm::vec3(std::sin(tilt), std::cos(tilt), 0.f);
+        double closed = 0.0;
+        for (const glm::vec4& cone : diffuseConeSet(16))
+            if (glm::dot(gpu::frame_fromZ(c.shadingNormal) * glm::vec3(cone), glm::vec3(0, 1, 0)) <= 0.f) closed += cone.w;
+        if (tilt > 0.f) ASSERT_GT(closed, 0.05) << "the tilt should close some cones";
+        for (const char* backend : {"gl", "vdb"})
+            for (double ao : vctAoAt(c, 64, backend, p))
+                EXPECT_NEAR(ao, 1.0 - closed, 2e-3) << backend << ", shading normal tilted " << tilt;
     }
 }
 
