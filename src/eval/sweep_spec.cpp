@@ -283,7 +283,7 @@ SweepSpec parseSweepSpec(const json& j, const SweepPaths& paths, const std::stri
         SweepScene s;
         s.settings = defaults;
         s.variants = methods;
-        s.cameras = {SweepCamera{"default", "", false, {}, {}, 45.f}};
+        s.cameras = {SweepCamera{"default", "", false, {}, {}, 45.f, {}}};
         if (e.is_string()) {
             s.entry = e.get<std::string>();
         } else if (e.is_object()) {

@@ -74,7 +74,9 @@ TEST(ConeBudget, ConesPerDispatchStayWithinTheBudget) {
                 const int cones = conesPerDispatch(maxDist, beta, loops, 0);
                 EXPECT_GE(cones, 1);
                 EXPECT_LE(cones, gpu::CONE_BLOCK_CONES);
-                if (cones > 1) EXPECT_LE(cones * coneLoopBound(maxDist, beta, loops), gpu::CONE_LOOP_BUDGET);
+                if (cones > 1) {
+                    EXPECT_LE(cones * coneLoopBound(maxDist, beta, loops), gpu::CONE_LOOP_BUDGET);
+                }
                 EXPECT_LE(conesPerDispatch(maxDist, beta, loops, 3), 3) << "vct.dispatch-cones lowers it";
             }
     // A short AO march fits the whole uniform block; a GI march to the grid's far side

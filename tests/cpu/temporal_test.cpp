@@ -74,7 +74,9 @@ TEST(Temporal, AStillCameraReprojectsEveryPixelOntoItself) {
     const Image f = fieldOn(a);
     const Image back = vct::reprojectImage(r, f);
     for (size_t i = 0; i < f.pixels.size(); ++i) {
-        if (r.valid[i]) ASSERT_NEAR(back.pixels[i], f.pixels[i], 1e-4f) << "pixel " << i;
+        if (r.valid[i]) {
+            ASSERT_NEAR(back.pixels[i], f.pixels[i], 1e-4f) << "pixel " << i;
+        }
     }
 }
 

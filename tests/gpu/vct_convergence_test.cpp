@@ -167,7 +167,9 @@ TEST(VctConvergence, LanesTakeTheirConesSideOfTheSurfacesPlane) {
         double closed = 0.0;
         for (const glm::vec4& cone : diffuseConeSet(16))
             if (glm::dot(gpu::frame_fromZ(c.shadingNormal) * glm::vec3(cone), glm::vec3(0, 1, 0)) <= 0.f) closed += cone.w;
-        if (tilt > 0.f) ASSERT_GT(closed, 0.05) << "the tilt should close some cones";
+        if (tilt > 0.f) {
+            ASSERT_GT(closed, 0.05) << "the tilt should close some cones";
+        }
         for (const char* backend : {"gl", "vdb"})
             for (double ao : vctAoAt(c, 64, backend, p))
                 EXPECT_NEAR(ao, 1.0 - closed, 2e-3) << backend << ", shading normal tilted " << tilt;
