@@ -65,7 +65,8 @@ results: build
 
 # Regenerates the convergence tables of docs/convergence.md (both backends, 32^3..256^3; the
 # default march, the lanes on a cubic grid, and those lanes over optical-depth levels; the total
-# error of the schedule that refines the cones with the voxels; AO, then
+# error of the schedule that refines the cones with the voxels; on the sparse backend, 32 cones
+# in lanes and the schedule to 512^3, trilinear and with vct.sharpen=4; AO, then
 # GI on the emitting families) and the Cornell box's per-surface GI table.
 convergence: build
 	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend gl --markdown docs/convergence_gl.md
@@ -82,6 +83,14 @@ convergence: build
 		--markdown docs/convergence_schedule_gl.md
 	./$(BUILD)/bench_convergence --schedule 64:6,128:16,256:64:64 --backend vdb --param vct.grid=cube --cases ' off' \
 		--markdown docs/convergence_schedule_vdb.md
+	./$(BUILD)/bench_convergence --res 128,256,512 --backend vdb --param vct.cones=32 --param vct.lanes=31 \
+		--param vct.grid=cube --markdown docs/convergence_vdb_lanes32.md
+	./$(BUILD)/bench_convergence --res 128,256,512 --backend vdb --param vct.cones=32 --param vct.lanes=31 \
+		--param vct.grid=cube --param vct.sharpen=4 --markdown docs/convergence_vdb_lanes32_sharpen.md
+	./$(BUILD)/bench_convergence --schedule 64:6,128:16,256:64:64,512:64:64 --backend vdb --param vct.grid=cube \
+		--cases ' off' --markdown docs/convergence_schedule_vdb_512.md
+	./$(BUILD)/bench_convergence --schedule 64:6,128:16,256:64:64,512:64:64 --backend vdb --param vct.grid=cube \
+		--param vct.sharpen=4 --cases ' off' --markdown docs/convergence_schedule_vdb_512_sharpen.md
 	$(MAKE) convergence-gi
 
 convergence-gi: build

@@ -5,7 +5,9 @@
 // grid.opacity), CONE_ANISO (1: blend the six directional textures above level 0),
 // CONE_ANISO_PACKED (AO over an AO grid: the three axes' directional opacity in one texture,
 // the same both ways along an axis: VoxelGrid::anisoOpacity), CONE_DEPTH_LEVELS (the
-// directional levels hold optical depth, opacity_depth.h). The depth levels are a compiled
+// directional levels hold optical depth, opacity_depth.h), CONE_SHARPEN (vct.sharpen > 1: each
+// axis fetched at its own coordinate, sharpened along it, and the two levels of a fractional
+// lod blended by hand). The depth levels are a compiled
 // variant, not a uniform branch: llvmpipe paid for the untaken branch's code in every sample
 // (AO 512^2 at trace-scale=4: trace stage 90 ms with the branch, 62 ms without).
 #include "cone/cone_common.glsl"
@@ -35,11 +37,42 @@ vec4 cone_sampleIso(vec3 tc, float lod) {
 #endif
 }
 
+#if CONE_ANISO && defined(CONE_SHARPEN)
+// vct.sharpen (u.camera.w): axis `axis` of the directional levels at texture level `level`
+// (pyramid level + 1), at tc moved along that axis so that linear filtering gives it
+// cone_sharpenTexel's weights; the level's texels follow GL's mip sizes.
+vec4 cone_fetchSharpened(int axis, bool positive, vec3 tc, float level) {
+    float size = max(floor(u.gridResolution[axis] * exp2(-(level + 1.0))), 1.0);
+    tc[axis] = cone_sharpenTexel(tc[axis] * size, u.camera.w) / size;
+    cone_fetches += 1.0;
+#ifdef CONE_ANISO_PACKED
+    return vec4(0.0, 0.0, 0.0, textureLod(cone_anisoOpacity, tc, level)[axis]);
+#else
+    if (axis == 0) return positive ? textureLod(cone_anisoPX, tc, level) : textureLod(cone_anisoNX, tc, level);
+    if (axis == 1) return positive ? textureLod(cone_anisoPY, tc, level) : textureLod(cone_anisoNY, tc, level);
+    return positive ? textureLod(cone_anisoPZ, tc, level) : textureLod(cone_anisoNZ, tc, level);
+#endif
+}
+
+// One axis at fractional level `lod`: each of the two levels at its own sharpened coordinate,
+// blended as trilinear filtering blends them (the sparse backend's order).
+vec4 cone_sampleAxisSharpened(int axis, bool positive, vec3 tc, float lod) {
+    float l0 = floor(lod);
+    vec4 s = cone_fetchSharpened(axis, positive, tc, l0);
+    if (lod > l0) s = mix(s, cone_fetchSharpened(axis, positive, tc, l0 + 1.0), lod - l0);
+    return s;
+}
+#endif
+
 #if CONE_ANISO
 // Directional level `lod` (= pyramid level lod + 1) as seen by a cone travelling along d.
 vec4 cone_sampleAniso(vec3 tc, vec3 d, float lod) {
     vec3 w = cone_anisoWeights(d);
-#ifdef CONE_ANISO_PACKED
+#if defined(CONE_SHARPEN)
+    vec4 x = cone_sampleAxisSharpened(0, d.x >= 0.0, tc, lod);
+    vec4 y = cone_sampleAxisSharpened(1, d.y >= 0.0, tc, lod);
+    vec4 z = cone_sampleAxisSharpened(2, d.z >= 0.0, tc, lod);
+#elif defined(CONE_ANISO_PACKED)
     // The three axes in one fetch (an RGBA fetch costs about what a single-channel one does).
     cone_fetches += 1.0;
     vec3 axes = textureLod(cone_anisoOpacity, tc, lod).rgb;

@@ -145,6 +145,27 @@ VCT_CONST float CONE_DEFAULT_MAX_ALPHA = 0.99;
 VCT_CONST float CONE_PLANE_LIMIT_RATIO = 1.5;
 // Crassin 2011's AO falloff 1 / (1 + lambda t), with lambda = 4 / R: weight 0.2 at t = R.
 VCT_CONST float CONE_FALLOFF_LAMBDA_R = 4.0;
+// vct.sharpen: 1 keeps plain trilinear filtering of the directional levels. The value that
+// removes a sheet's leak is 4: at the default step (two samples a texel) a crossing cone always
+// samples the opaque 3/4 of a texel it leaves, where 2 leaves half a texel to miss.
+VCT_CONST float CONE_DEFAULT_SHARPEN = 1.0;
+VCT_CONST float CONE_SHARPEN_MAX = 16.0;
+
+// vct.sharpen's filter along one axis: the coordinate, in texels of one level (centres at
+// i + 1/2), at which linear filtering gives texel i + 1 the weight clamp((f - 1/2) s + 1/2, 0, 1)
+// instead of f, the fraction of the way from centre i to centre i + 1. A directional level is
+// crossed along its own axis, and there a one-texel sheet filtered linearly is a tent two texels
+// wide whose opacity, composited with the step correction, passes exp(-2) = 13.5% of a cone that
+// crosses an opaque texel, at every level and resolution: an error that finer voxels never
+// reduce. Sharpened by s the tent becomes a box of 1 - 1/s texels with ramps of 1/s, which a
+// crossing cone cannot pass, while the two axes across the level keep their linear weights (a
+// sheet's edge stays where its coverage puts it). s = 1 is the identity; the weights still sum
+// to 1, so a uniform medium is unchanged.
+CONE_FN float cone_sharpenTexel(float x, float s) {
+    float i = floor(x - 0.5f);
+    float f = clamp((x - 0.5f - i - 0.5f) * s + 0.5f, 0.0f, 1.0f);
+    return i + 0.5f + f;
+}
 
 struct ConeUniforms {
     mat4 voxelFromWorld;   // world -> voxel units [0, resolution]
@@ -154,7 +175,8 @@ struct ConeUniforms {
     vec4 limits;           // x = max distance (voxels), y = sky radiance, z = falloff lambda (1/voxels),
                            // w = plane-limit ratio (0 = off)
     vec4 camera;           // x = tan(yfov / 2) * aspect, y = tan(yfov / 2), z = ray step (voxels),
-                           // w unused (optical-depth levels are the CONE_DEPTH_LEVELS variant)
+                           // w = vct.sharpen (read by the CONE_SHARPEN variant; optical-depth levels
+                           // are the CONE_DEPTH_LEVELS variant)
     ivec4 config;          // x = cones in this dispatch (cones[0, x)), y = AO mapping, z = mip level (rayMarch), w = channel (rayMarch)
     ivec4 image;           // x = width, y = height, z = cone jitter (1: rotate per pixel), w = its seed
     ivec4 trace;           // pixel passes: x = trace scale (vct.trace-scale), y = stage (CONE_STAGE_*),

@@ -103,7 +103,7 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
         glBindTextureUnit(gpu::CONE_UNIT_BOUNCE_DIRECT, direct.id());
         glBindTextureUnit(gpu::CONE_UNIT_BOUNCE_EMISSION, grid.emission.id());
         bindImage3D(gpu::CONE_IMAGE_OUTPUT, grid.radiance.id(), 0, GL_WRITE_ONLY, format);
-        glUseProgram(cachedProgram(coneBounceProgramKey(cone.anisotropic, format, BouncePass::Emitted, false)));
+        glUseProgram(cachedProgram(coneBounceProgramKey(cone.anisotropic, format, BouncePass::Emitted, false, false)));
         const int g = gpu::VOX_GRID_GROUP;
         glDispatchCompute(groupCount(res.x, g), groupCount(res.y, g), groupCount(res.z, g));
         glMemoryBarrier(GL_ALL_BARRIER_BITS);
@@ -116,11 +116,12 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
         ubo = bindConeUniforms(uniforms);
         const ConeDirectional directional = bindGridTextures(true, grid, cone);
         const bool aniso = directional != ConeDirectional::None, depth = readsDepthLevels(grid, directional);
+        const bool sharpen = readsSharpened(cone, directional);
         glBindTextureUnit(gpu::CONE_UNIT_BOUNCE_DIRECT, direct.id());
         glBindTextureUnit(gpu::CONE_UNIT_BOUNCE_ALBEDO, grid.albedo.id());
         if (i == 0) {
             // Listed once: direct light and normals do not change.
-            const GLuint listPass = cachedProgram(coneBounceProgramKey(aniso, format, BouncePass::List, depth));
+            const GLuint listPass = cachedProgram(coneBounceProgramKey(aniso, format, BouncePass::List, depth, sharpen));
             glUseProgram(listPass);
             const int g = gpu::VOX_GRID_GROUP;
             for (Slab& slab : slabs) {
@@ -135,7 +136,7 @@ void traceVoxelBounces(VoxelGrid& grid, float sky, const ConeSettings& cone, con
         glCopyImageSubData(direct.id(), GL_TEXTURE_3D, 0, 0, 0, 0, next.id(), GL_TEXTURE_3D, 0, 0, 0, 0, res.x, res.y,
                            res.z);
         bindImage3D(gpu::CONE_IMAGE_OUTPUT, next.id(), 0, GL_WRITE_ONLY, format);
-        glUseProgram(cachedProgram(coneBounceProgramKey(aniso, format, BouncePass::Gather, depth)));
+        glUseProgram(cachedProgram(coneBounceProgramKey(aniso, format, BouncePass::Gather, depth, sharpen)));
         // The cone set over the loop budget's dispatches (coneSlices), the sums of a slab's
         // listed voxels carried between them.
         const ConeSlices coneSet = coneSlices(uniforms, cone, denseLoopsPerStep(cone));

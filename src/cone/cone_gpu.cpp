@@ -64,6 +64,7 @@ gpu::ConeUniforms coneUniforms(bool gi, const VoxelGrid& grid, float maxDistWorl
     u.lanes = glm::ivec4(lanes.lanesPerCone, 0, 0, 0);
     for (size_t i = 0; i < lanes.axes.size(); ++i) u.coneAxes[i] = lanes.axes[i];
     u.trace = glm::ivec4(settings.traceScale, gpu::CONE_STAGE_TRACE, 0, 0);
+    u.camera.w = settings.sharpen;
     return u;
 }
 
@@ -109,6 +110,10 @@ bool readsDepthLevels(const VoxelGrid& grid, ConeDirectional directional) {
     return grid.depthLevels && directional != ConeDirectional::None;
 }
 
+bool readsSharpened(const ConeSettings& settings, ConeDirectional directional) {
+    return sharpensLevels(settings) && directional != ConeDirectional::None;
+}
+
 ConeDirectional bindGridTextures(bool gi, const VoxelGrid& grid, const ConeSettings& settings) {
     const ConeDirectional directional = directionalLevels(gi, grid, settings);
     glBindTextureUnit(gpu::CONE_UNIT_OPACITY, gi ? grid.radiance.id() : grid.opacity.id());
@@ -128,6 +133,7 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
     bindGBufferTextures(gbuffer);  // the shaders texelFetch position, normal, geomNormal, albedo
     bound.directional = bindGridTextures(gi, grid, settings);
     bound.depthLevels = readsDepthLevels(grid, bound.directional);
+    bound.sharpen = readsSharpened(settings, bound.directional);
     bound.slices = coneSlices(u, settings, denseLoopsPerStep(settings));
     return bound;
 }

@@ -64,15 +64,20 @@ ConeDirectional bindGridTextures(bool gi, const VoxelGrid& grid, const ConeSetti
 // Whether a pass reading `directional` levels of `grid` reads optical depth (the programs'
 // CONE_DEPTH_LEVELS variant): the grid's directional levels hold it and the pass reads them.
 bool readsDepthLevels(const VoxelGrid& grid, ConeDirectional directional);
+// Whether a pass reading `directional` levels reads them with vct.sharpen's filter (the
+// programs' CONE_SHARPEN variant, whose s is ConeUniforms::camera.w).
+bool readsSharpened(const ConeSettings& settings, ConeDirectional directional);
 
 // One cone pass bound and ready for its program's dispatch: uniforms uploaded and bound,
 // the G-buffer, the grid's textures (opacity or radiance, directional mips, normals for
 // GI's facing test) on their units. `directional`: the directional levels bound;
-// `depthLevels`: whether they hold optical depth (readsDepthLevels).
+// `depthLevels`: whether they hold optical depth (readsDepthLevels); `sharpen`: whether they
+// are read sharpened (readsSharpened).
 struct BoundConePass {
     GlBuffer ubo;
     ConeDirectional directional = ConeDirectional::None;
     bool depthLevels = false;
+    bool sharpen = false;
     ConeSlices slices;
 };
 BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffer, float maxDistWorld, float sky,

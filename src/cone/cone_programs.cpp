@@ -7,16 +7,18 @@ namespace vct {
 
 namespace {
 ShaderDefines coneDefines(bool gi, bool aniso) { return {{"CONE_GI", gi ? "1" : "0"}, {"CONE_ANISO", aniso ? "1" : "0"}}; }
-ShaderDefines coneDefines(bool gi, ConeDirectional directional, bool depthLevels) {
+ShaderDefines coneDefines(bool gi, ConeDirectional directional, bool depthLevels, bool sharpen) {
     ShaderDefines d = coneDefines(gi, directional != ConeDirectional::None);
     if (directional == ConeDirectional::Packed) d.push_back({"CONE_ANISO_PACKED", "1"});
     if (depthLevels && directional != ConeDirectional::None) d.push_back({"CONE_DEPTH_LEVELS", "1"});
+    if (sharpen && directional != ConeDirectional::None) d.push_back({"CONE_SHARPEN", "1"});
     return d;
 }
 }  // namespace
 
-ProgramKey conePassProgramKey(bool gi, ConeDirectional directional, bool depthLevels) {
-    return computeProgramKey(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl", coneDefines(gi, directional, depthLevels));
+ProgramKey conePassProgramKey(bool gi, ConeDirectional directional, bool depthLevels, bool sharpen) {
+    return computeProgramKey(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl",
+                             coneDefines(gi, directional, depthLevels, sharpen));
 }
 
 ProgramKey clipmapConePassProgramKey(bool gi) {
@@ -30,11 +32,11 @@ ProgramKey coneResolveProgramKey(bool gi) {
     return computeProgramKey(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl", d);
 }
 
-ProgramKey coneBounceProgramKey(bool aniso, GLenum radianceFormat, BouncePass pass, bool depthLevels) {
+ProgramKey coneBounceProgramKey(bool aniso, GLenum radianceFormat, BouncePass pass, bool depthLevels, bool sharpen) {
     // The list and emission passes march no cones: one variant whatever the levels hold.
     const bool gathers = pass == BouncePass::Gather;
-    ShaderDefines d =
-        coneDefines(true, aniso ? ConeDirectional::Six : ConeDirectional::None, depthLevels && gathers);
+    ShaderDefines d = coneDefines(true, aniso ? ConeDirectional::Six : ConeDirectional::None, depthLevels && gathers,
+                                  sharpen && gathers);
     d.push_back({"RADIANCE_FORMAT", glslImageFormat(radianceFormat)});
     d.push_back({"RADIANCE_FORMAT_MAX", formatMaxLiteral(radianceFormat)});
     if (pass == BouncePass::List) d.push_back({"BOUNCE_LIST", "1"});
@@ -50,8 +52,8 @@ ProgramKey voxelViewProgramKey(int channel) {
     return computeProgramKey("cone/cone_raymarch.glsl", d);
 }
 
-ProgramKey coneCountProgramKey(bool gi, ConeDirectional directional, bool depthLevels) {
-    return computeProgramKey("bench/cone_count.glsl", coneDefines(gi, directional, depthLevels));
+ProgramKey coneCountProgramKey(bool gi, ConeDirectional directional, bool depthLevels, bool sharpen) {
+    return computeProgramKey("bench/cone_count.glsl", coneDefines(gi, directional, depthLevels, sharpen));
 }
 
 ProgramKey fetchBenchProgramKey() { return computeProgramKey("bench/fetch.glsl"); }
@@ -63,11 +65,13 @@ std::vector<ProgramKey> coneProgramVariants() {
     for (bool gi : {false, true}) {
         for (ConeDirectional d : {ConeDirectional::None, ConeDirectional::Six, ConeDirectional::Packed}) {
             if (gi && d == ConeDirectional::Packed) continue;  // a lit grid has its six
-            for (bool depth : {false, true}) {
-                if (depth && d == ConeDirectional::None) continue;  // depth lives in directional levels
-                v.push_back(conePassProgramKey(gi, d, depth));
-                v.push_back(coneCountProgramKey(gi, d, depth));
-            }
+            for (bool depth : {false, true})
+                for (bool sharpen : {false, true}) {
+                    // Depth and the sharpened filter live in directional levels.
+                    if ((depth || sharpen) && d == ConeDirectional::None) continue;
+                    v.push_back(conePassProgramKey(gi, d, depth, sharpen));
+                    v.push_back(coneCountProgramKey(gi, d, depth, sharpen));
+                }
         }
         v.push_back(clipmapConePassProgramKey(gi));
         v.push_back(coneResolveProgramKey(gi));
@@ -75,9 +79,10 @@ std::vector<ProgramKey> coneProgramVariants() {
     for (bool aniso : {false, true})
         for (GLenum f : {GLenum(GL_RGBA16F), GLenum(GL_RGBA32F)})
             for (BouncePass pass : {BouncePass::List, BouncePass::Emitted, BouncePass::Gather})
-                for (bool depth : {false, true})  // the key ignores depth but for gathers with aniso
-                    if (!(depth && (pass != BouncePass::Gather || !aniso)))
-                        v.push_back(coneBounceProgramKey(aniso, f, pass, depth));
+                for (bool depth : {false, true})  // the key ignores depth and sharpen but for gathers with aniso
+                    for (bool sharpen : {false, true})
+                        if (!((depth || sharpen) && (pass != BouncePass::Gather || !aniso)))
+                            v.push_back(coneBounceProgramKey(aniso, f, pass, depth, sharpen));
     for (int c : {gpu::CONE_CHANNEL_OPACITY, gpu::CONE_CHANNEL_ALBEDO, gpu::CONE_CHANNEL_RADIANCE})
         v.push_back(voxelViewProgramKey(c));
     v.push_back(fetchBenchProgramKey());

@@ -13,9 +13,10 @@ namespace vct {
 enum class ConeDirectional { None, Six, Packed };
 
 // cone_ao.glsl / cone_gi.glsl over one dense grid, with its directional levels or without;
-// `depthLevels`: the directional levels hold optical depth (VoxelGrid::depthLevels; ignored
-// without directional levels).
-ProgramKey conePassProgramKey(bool gi, ConeDirectional directional, bool depthLevels);
+// `depthLevels`: the directional levels hold optical depth (VoxelGrid::depthLevels);
+// `sharpen`: they are read with vct.sharpen's filter (the CONE_SHARPEN variant). Both are
+// ignored without directional levels.
+ProgramKey conePassProgramKey(bool gi, ConeDirectional directional, bool depthLevels, bool sharpen);
 // The same over a clipmap's levels (isotropic).
 ProgramKey clipmapConePassProgramKey(bool gi);
 // The resolve stage of a reduced-resolution AO or GI pass (cone_resolve.glsl): one program
@@ -23,13 +24,13 @@ ProgramKey clipmapConePassProgramKey(bool gi);
 ProgramKey coneResolveProgramKey(bool gi);
 // cone_bounce.glsl's three passes: list the voxels that gather, write the emission alone (the
 // first gather's source in a scene with emitters), and the gather of one bounce
-// (`depthLevels` as above; the other two ignore it).
+// (`depthLevels` and `sharpen` as above; the other two ignore them).
 enum class BouncePass { List, Emitted, Gather };
-ProgramKey coneBounceProgramKey(bool aniso, GLenum radianceFormat, BouncePass pass, bool depthLevels);
+ProgramKey coneBounceProgramKey(bool aniso, GLenum radianceFormat, BouncePass pass, bool depthLevels, bool sharpen);
 // cone_raymarch.glsl: the voxel_* views; channel is gpu::CONE_CHANNEL_*.
 ProgramKey voxelViewProgramKey(int channel);
 // bench/: the cone pass with a fetch counter, and the bare trilinear-fetch shader.
-ProgramKey coneCountProgramKey(bool gi, ConeDirectional directional, bool depthLevels);
+ProgramKey coneCountProgramKey(bool gi, ConeDirectional directional, bool depthLevels, bool sharpen);
 ProgramKey fetchBenchProgramKey();
 // cone_march_check.glsl: the shared march's functions on a buffer of inputs (the test that
 // holds the CPU tracer's march to the shaders').

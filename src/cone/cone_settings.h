@@ -42,6 +42,7 @@ struct ConeSettings {
     ConeOpacity opacity = ConeOpacity::Alpha;  // vct.opacity: the directional levels' encoding
     int traceScale = 1;             // vct.trace-scale: cones traced for one pixel per s x s block, resolved
     int dispatchCones = 0;          // vct.dispatch-cones: at most this many cones per dispatch; 0 = the loop budget's
+    float sharpen = gpu::CONE_DEFAULT_SHARPEN;  // vct.sharpen: directional levels' filter along their axis (cone_sharpenTexel)
     uint32_t seed = 0;              // the render's seed, for the jitter: set by the caller, not a --param
 
     // Throws InternalError naming the field if a value is outside its range.
@@ -64,6 +65,9 @@ inline uint32_t coneJitterSeed(uint64_t seed) { return uint32_t(seed) ^ uint32_t
 // the directional levels carry (vct.aniso=1). The one rule the mip builders of both backends,
 // the voxel caches' keys and --explain read.
 inline bool wantsDepthLevels(const ConeSettings& s) { return s.anisotropic && s.opacity == ConeOpacity::Depth; }
+// True when the directional levels are to be read with vct.sharpen's filter (s > 1; the
+// settings refuse s > 1 without them). The one rule both backends' samplers and --explain read.
+inline bool sharpensLevels(const ConeSettings& s) { return s.anisotropic && s.sharpen > 1.f; }
 
 std::string toString(ConeAoMapping m);
 

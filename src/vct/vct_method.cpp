@@ -16,6 +16,7 @@
 #include "voxelize/voxel_programs.h"
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 namespace vct {
@@ -70,6 +71,11 @@ std::string coneExplanation(const RenderRequest& r) {
         s += ", each marched as " + std::to_string(lanes) + " lanes" +
              (c.lanes == 0 ? " (vct.lanes=auto at " + std::to_string(r.voxelRes) + "^3)" : " (vct.lanes)");
     if (c.jitter) s += ", turned about the normal per pixel (vct.jitter, from the seed)";
+    if (sharpensLevels(c)) {
+        std::ostringstream sharpen;
+        sharpen << c.sharpen;
+        s += ", the directional levels sharpened along their axis (vct.sharpen=" + sharpen.str() + ")";
+    }
     if (c.traceScale > 1)
         s += ", traced for one pixel per " + std::to_string(c.traceScale) + "x" + std::to_string(c.traceScale) +
              " block and resolved for the others (vct.trace-scale)";

@@ -110,6 +110,10 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
     if (levels > 0 && cone.opacity == ConeOpacity::Depth)
         throw UsageError("--param vct.opacity=depth: clipmaps keep isotropic levels only (vct.clipmap.levels=" +
                          std::to_string(levels) + "); use the dense grid or the sparse backend");
+    if (levels > 0 && sharpensLevels(cone))
+        throw UsageError("--param vct.sharpen: it filters the directional levels, and clipmaps keep isotropic levels "
+                         "only (vct.clipmap.levels=" + std::to_string(levels) +
+                         "); use the dense grid or the sparse backend");
     const bool attributes = voxelAttributesNeeded(ctx);
     std::string key = voxelGridKey(r, inject, aniso, attributes) + ";region=" + boundsKey(region.bounds);
     if (aniso && wantsDepthLevels(cone)) key += ";depth";

@@ -38,6 +38,7 @@ struct MarchParams {
     std::vector<glm::vec4> cones;       // the set's lanes (coneMarchLanes)
     std::vector<glm::vec4> axes;        // the set's cones (ConeLanes::axes)
     int lanesPerCone = 1;
+    float sharpen = 1.f;                // vct.sharpen when the levels are directional, else 1
 };
 
 // One thread's view of the levels: the volume of gpu::cone_marchVolume.
@@ -106,13 +107,28 @@ struct LevelSampler {
         return gpu::cone_leaving(p, d, mp->res, 1.5f * texel);
     }
 
-    // Trilinear at pyramid level `level` (>= 1) of direction d's levels.
+    // Trilinear at pyramid level `level` (>= 1) of direction d's levels; with vct.sharpen,
+    // sharpened along d's axis (gpu::cone_sharpenTexel, on GL texel coordinates: index + 1/2).
     glm::vec4 sampleDirectional(const glm::vec3& p, size_t d, int level) {
-        const openvdb::Vec3R xyz = levelCoord(p, level);
+        openvdb::Vec3R xyz = levelCoord(p, level);
+        if (mp->sharpen > 1.f) {
+            const size_t a = d / 2;
+            xyz[a] = double(gpu::cone_sharpenTexel(float(xyz[a]) + 0.5f, mp->sharpen) - 0.5f);
+        }
         const float a = openvdb::tools::BoxSampler::sample(*dirOpacity[d][size_t(level - 1)], xyz);
         if (dirRadiance[d].empty()) return glm::vec4(0.f, 0.f, 0.f, a);
         const openvdb::Vec3s c = openvdb::tools::BoxSampler::sample(*dirRadiance[d][size_t(level - 1)], xyz);
         return glm::vec4(c[0], c[1], c[2], a);
+    }
+
+    // The fetches of one directional sample at footprint 2^lod: the textures' own (one or
+    // three, trilinear across levels), or, sharpened, one per axis at each of the levels it
+    // blends (the CONE_SHARPEN variant fetches each axis at its own coordinate).
+    double directionalSampleFetches(float lod) const {
+        if (!(mp->sharpen > 1.f)) return directionalFetches;
+        const float l = std::clamp(std::max(lod, 1.f), 0.f, mp->maxLod);
+        const bool blends = l - std::floor(l) > 0.f && std::floor(l) + 1.f <= mp->maxLod;
+        return blends ? 6.0 : 3.0;
     }
 
     // cone_sampleAniso: the directional levels at footprint 2^lod (lod >= 1) as seen by a cone
@@ -136,7 +152,7 @@ struct LevelSampler {
             fetches += 1.0;
             return acrossLevels(lod, [&](int level) { return sampleLevel(p, level); });
         }
-        fetches += directionalFetches + (lod < 1.f ? 1.0 : 0.0);
+        fetches += directionalSampleFetches(lod) + (lod < 1.f ? 1.0 : 0.0);
         glm::vec4 directional = sampleAniso(p, d, lod);
         if (lod < 1.f) {
             if (depth)
@@ -237,6 +253,7 @@ MarchParams marchParams(const SparseVoxelScene& v, const ConeSettings& s) {
     mp.march.planeRatio = s.planeLimit ? gpu::CONE_PLANE_LIMIT_RATIO : 0.f;
     mp.march.levelBase = glm::vec3(v.resolution);
     mp.offset = s.offsetVoxels;
+    mp.sharpen = sharpensLevels(s) ? s.sharpen : 1.f;
     mp.maxLod = float(int(v.opacityLevels.size()) - 1);
     mp.res = glm::vec3(v.resolution);
     for (int k = 0; k < int(v.opacityLevels.size()); ++k)

@@ -141,6 +141,11 @@ TEST(RenderCli, ExplainPrintsRunAndSkippedPasses) {
     auto two = runVct("render scenes/default.gltf --size 16 --gi vct --voxel-res 16 --explain -o " + dir + "/d.png");
     ASSERT_EQ(two.exitCode, 0) << two.output;
     EXPECT_NE(two.output.find("2 " + split), std::string::npos) << two.output;
+    // The cone passes say when they read the directional levels sharpened.
+    auto sharp = runVct("render scenes/cornell_box.gltf --size 16 --ao vct --voxel-res 16 --param vct.sharpen=4 "
+                        "--explain -o " + dir + "/s.png");
+    ASSERT_EQ(sharp.exitCode, 0) << sharp.output;
+    EXPECT_NE(sharp.output.find("sharpened along their axis (vct.sharpen=4)"), std::string::npos) << sharp.output;
 }
 
 TEST(RenderCli, BadInputFailsCleanlyWithoutOutput) {
@@ -160,6 +165,10 @@ TEST(RenderCli, BadInputFailsCleanlyWithoutOutput) {
         {"render scenes/cornell_box.gltf --camera nope -o " + out, 2, "nope"},
         {"render scenes/cornell_box.gltf --param gtao.slices=3 -o " + out, 2, "gtao.slices"},
         {"render scenes/cornell_box.gltf --param novalue -o " + out, 2, "novalue"},
+        {"render scenes/cornell_box.gltf --ao vct --param vct.sharpen=4 --param vct.aniso=0 -o " + out, 2,
+         "vct.sharpen"},
+        {"render scenes/cornell_box.gltf --ao vct --param vct.sharpen=4 --param vct.clipmap.levels=3 -o " + out, 2,
+         "vct.sharpen"},
         {"render scenes/cornell_box.gltf --aov bogus -o " + out, 2, "bogus"},
         {"render scenes/cornell_box.gltf -o " + dir + "/x.tiff", 2, "x.tiff"},
         {"render scenes/cornell_box.gltf --frobnicate -o " + out, 2, "frobnicate"},
