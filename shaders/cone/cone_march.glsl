@@ -64,7 +64,33 @@ vec4 cone_sampleAxisSharpened(int axis, bool positive, vec3 tc, float lod) {
 }
 #endif
 
+#if CONE_ANISO && defined(CONE_SHARPEN)
+// The base level as a cone travelling along d crosses it. The base is isotropic, so it is
+// fetched once per axis, each fetch sharpened along its own axis, and the three blend as the
+// directional levels' axes do: a one-voxel sheet is a box along its normal to the axis that
+// crosses it, where one linear fetch would be a tent that lets a narrow cone (a footprint below
+// a voxel) through. Three fetches written out: a loop would count against llvmpipe's
+// per-invocation iteration limit that coneLoopBound budgets.
+vec4 cone_sampleBaseSharpened(vec3 tc, vec3 d) {
+    vec3 tx = tc, ty = tc, tz = tc;
+    tx.x = cone_sharpenTexel(tc.x * u.gridResolution.x, u.camera.w) / u.gridResolution.x;
+    ty.y = cone_sharpenTexel(tc.y * u.gridResolution.y, u.camera.w) / u.gridResolution.y;
+    tz.z = cone_sharpenTexel(tc.z * u.gridResolution.z, u.camera.w) / u.gridResolution.z;
+    return cone_blendDirectional(cone_anisoWeights(d), cone_sampleIso(tx, 0.0), cone_sampleIso(ty, 0.0),
+                                 cone_sampleIso(tz, 0.0));
+}
+#endif
+
 #if CONE_ANISO
+// The base level at a sample of direction d: sharpened (vct.sharpen) or one linear fetch.
+vec4 cone_sampleBase(vec3 tc, vec3 d) {
+#if defined(CONE_SHARPEN)
+    return cone_sampleBaseSharpened(tc, d);
+#else
+    return cone_sampleIso(tc, 0.0);
+#endif
+}
+
 // Directional level `lod` (= pyramid level lod + 1) as seen by a cone travelling along d.
 vec4 cone_sampleAniso(vec3 tc, vec3 d, float lod) {
     vec3 w = cone_anisoWeights(d);
@@ -107,10 +133,10 @@ vec4 cone_sampleGrid(vec3 p, vec3 d, float lod) {
 #ifdef CONE_DEPTH_LEVELS
         // With optical-depth levels the two levels blend as depth (the base level's 0 / 1
         // voxels filter to VOX_DEPTH_MAX times their opacity).
-        directional = vox_alphaFromDepth(mix(vox_depthFromCoverage(cone_sampleIso(tc, 0.0)),
+        directional = vox_alphaFromDepth(mix(vox_depthFromCoverage(cone_sampleBase(tc, d)),
                                              vox_depthFromAlpha(directional), lod));
 #else
-        directional = mix(cone_sampleIso(tc, 0.0), directional, lod);
+        directional = mix(cone_sampleBase(tc, d), directional, lod);
 #endif
     }
     return directional;

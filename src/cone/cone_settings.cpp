@@ -95,12 +95,14 @@ const SettingsTable<ConeSettings>& coneSettings() {
                     "sparse backend")
             .real("vct.sharpen", &ConeSettings::sharpen, 1.f, gpu::CONE_SHARPEN_MAX,
                   "filter of each directional level along the axis it is crossed along: linear weight f becomes "
-                  "clamp((f - 1/2) s + 1/2, 0, 1), the axes across keep theirs. 1 = trilinear (Crassin 2011), whose "
+                  "clamp((f - 1/2) s + 1/2, 0, 1), the axes across keep theirs; the isotropic base level is "
+                  "fetched once per axis, each sharpened along it, blended as the directional axes. 1 = trilinear "
+                  "(Crassin 2011), whose "
                   "tent passes exp(-2) = 13% of a cone crossing a one-voxel sheet at every resolution, so narrow "
                   "cones (vct.lanes=0, vct.grid=cube) stop converging past 256^3; 4 removes that leak and they "
                   "converge to 512^3, while the default 6 wide cones, whose footprint error the leak offsets, turn "
                   "darker. Needs vct.aniso=1 (dense grid or sparse backend); costs one fetch per axis and level a "
-                  "sample blends (up to 6, against 1 on an AO grid or 3 on a lit one)")
+                  "sample blends (up to 6, against 1 on an AO grid or 3 on a lit one; 3 on the base level against 1)")
             .integer("vct.trace-scale", &ConeSettings::traceScale, 1, gpu::CONE_MAX_TRACE_SCALE,
                      "trace the cones of one pixel per s x s block and resolve the others from the nearest blocks "
                      "that share their surface (normal and tangent plane; a pixel sharing none traces its own): "

@@ -74,7 +74,8 @@ std::string coneExplanation(const RenderRequest& r) {
     if (sharpensLevels(c)) {
         std::ostringstream sharpen;
         sharpen << c.sharpen;
-        s += ", the directional levels sharpened along their axis (vct.sharpen=" + sharpen.str() + ")";
+        s += ", the directional levels sharpened along their axis (vct.sharpen=" + sharpen.str() +
+             "), the base level once per axis";
     }
     if (c.traceScale > 1)
         s += ", traced for one pixel per " + std::to_string(c.traceScale) + "x" + std::to_string(c.traceScale) +

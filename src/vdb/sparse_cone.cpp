@@ -91,8 +91,10 @@ struct LevelSampler {
     }
 
     // Trilinear at one level.
-    glm::vec4 sampleLevel(const glm::vec3& p, int level) {
-        const openvdb::Vec3R xyz = levelCoord(p, level);
+    glm::vec4 sampleLevel(const glm::vec3& p, int level) { return sampleLevelAt(levelCoord(p, level), level); }
+
+    // Trilinear at one level, at level texel coordinates xyz.
+    glm::vec4 sampleLevelAt(const openvdb::Vec3R& xyz, int level) {
         const float a = openvdb::tools::BoxSampler::sample(*opacity[size_t(level)], xyz);
         if (radiance.empty()) return glm::vec4(0.f, 0.f, 0.f, a);
         const openvdb::Vec3s c = openvdb::tools::BoxSampler::sample(*radiance[size_t(level)], xyz);
@@ -119,6 +121,19 @@ struct LevelSampler {
         if (dirRadiance[d].empty()) return glm::vec4(0.f, 0.f, 0.f, a);
         const openvdb::Vec3s c = openvdb::tools::BoxSampler::sample(*dirRadiance[d][size_t(level - 1)], xyz);
         return glm::vec4(c[0], c[1], c[2], a);
+    }
+
+    // cone_sampleBase: the base level at a sample of direction d. With vct.sharpen, one fetch per
+    // axis sharpened along that axis, blended as the directional levels' axes are
+    // (cone_sampleBaseSharpened); else one trilinear fetch.
+    glm::vec4 sampleBase(const glm::vec3& p, const glm::vec3& d) {
+        if (!(mp->sharpen > 1.f)) return sampleLevel(p, 0);
+        auto along = [&](int a) {
+            openvdb::Vec3R xyz = levelCoord(p, 0);
+            xyz[a] = double(gpu::cone_sharpenTexel(float(xyz[a]) + 0.5f, mp->sharpen) - 0.5f);
+            return sampleLevelAt(xyz, 0);
+        };
+        return gpu::cone_blendDirectional(gpu::cone_anisoWeights(d), along(0), along(1), along(2));
     }
 
     // The fetches of one directional sample at footprint 2^lod: the textures' own (one or
@@ -152,14 +167,14 @@ struct LevelSampler {
             fetches += 1.0;
             return acrossLevels(lod, [&](int level) { return sampleLevel(p, level); });
         }
-        fetches += directionalSampleFetches(lod) + (lod < 1.f ? 1.0 : 0.0);
+        fetches += directionalSampleFetches(lod) + (lod < 1.f ? (mp->sharpen > 1.f ? 3.0 : 1.0) : 0.0);
         glm::vec4 directional = sampleAniso(p, d, lod);
         if (lod < 1.f) {
             if (depth)
-                directional = gpu::vox_alphaFromDepth(glm::mix(gpu::vox_depthFromCoverage(sampleLevel(p, 0)),
+                directional = gpu::vox_alphaFromDepth(glm::mix(gpu::vox_depthFromCoverage(sampleBase(p, d)),
                                                               gpu::vox_depthFromAlpha(directional), std::max(lod, 0.f)));
             else
-                directional = glm::mix(sampleLevel(p, 0), directional, std::max(lod, 0.f));
+                directional = glm::mix(sampleBase(p, d), directional, std::max(lod, 0.f));
         }
         return directional;
     }
