@@ -38,12 +38,17 @@ vec4 cone_sampleIso(vec3 tc, float lod) {
 }
 
 #if CONE_ANISO && defined(CONE_SHARPEN)
-// vct.sharpen (u.camera.w): axis `axis` of the directional levels at texture level `level`
-// (pyramid level + 1), at tc moved along that axis so that linear filtering gives it
-// cone_sharpenTexel's weights; the level's texels follow GL's mip sizes.
-vec4 cone_fetchSharpened(int axis, bool positive, vec3 tc, float level) {
-    float size = max(floor(u.gridResolution[axis] * exp2(-(level + 1.0))), 1.0);
+// vct.sharpen (u.camera.w): tc moved along `axis`, on a level `size` texels long on that axis,
+// so that linear filtering gives cone_sharpenTexel's weights there.
+vec3 cone_sharpenAlong(vec3 tc, int axis, float size) {
     tc[axis] = cone_sharpenTexel(tc[axis] * size, u.camera.w) / size;
+    return tc;
+}
+
+// Axis `axis` of the directional levels at texture level `level` (pyramid level + 1), sharpened
+// along that axis; the level's texels follow GL's mip sizes.
+vec4 cone_fetchSharpened(int axis, bool positive, vec3 tc, float level) {
+    tc = cone_sharpenAlong(tc, axis, max(floor(u.gridResolution[axis] * exp2(-(level + 1.0))), 1.0));
     cone_fetches += 1.0;
 #ifdef CONE_ANISO_PACKED
     return vec4(0.0, 0.0, 0.0, textureLod(cone_anisoOpacity, tc, level)[axis]);
@@ -72,12 +77,10 @@ vec4 cone_sampleAxisSharpened(int axis, bool positive, vec3 tc, float lod) {
 // a voxel) through. Three fetches written out: a loop would count against llvmpipe's
 // per-invocation iteration limit that coneLoopBound budgets.
 vec4 cone_sampleBaseSharpened(vec3 tc, vec3 d) {
-    vec3 tx = tc, ty = tc, tz = tc;
-    tx.x = cone_sharpenTexel(tc.x * u.gridResolution.x, u.camera.w) / u.gridResolution.x;
-    ty.y = cone_sharpenTexel(tc.y * u.gridResolution.y, u.camera.w) / u.gridResolution.y;
-    tz.z = cone_sharpenTexel(tc.z * u.gridResolution.z, u.camera.w) / u.gridResolution.z;
-    return cone_blendDirectional(cone_anisoWeights(d), cone_sampleIso(tx, 0.0), cone_sampleIso(ty, 0.0),
-                                 cone_sampleIso(tz, 0.0));
+    vec4 x = cone_sampleIso(cone_sharpenAlong(tc, 0, u.gridResolution.x), 0.0);
+    vec4 y = cone_sampleIso(cone_sharpenAlong(tc, 1, u.gridResolution.y), 0.0);
+    vec4 z = cone_sampleIso(cone_sharpenAlong(tc, 2, u.gridResolution.z), 0.0);
+    return cone_blendDirectional(cone_anisoWeights(d), x, y, z);
 }
 #endif
 

@@ -109,14 +109,18 @@ struct LevelSampler {
         return gpu::cone_leaving(p, d, mp->res, 1.5f * texel);
     }
 
+    // Level texel coordinates xyz moved along `axis` by vct.sharpen (gpu::cone_sharpenTexel, on
+    // GL texel coordinates: index + 1/2); cone_sharpenAlong.
+    openvdb::Vec3R sharpenAlong(openvdb::Vec3R xyz, size_t axis) const {
+        xyz[axis] = double(gpu::cone_sharpenTexel(float(xyz[axis]) + 0.5f, mp->sharpen) - 0.5f);
+        return xyz;
+    }
+
     // Trilinear at pyramid level `level` (>= 1) of direction d's levels; with vct.sharpen,
-    // sharpened along d's axis (gpu::cone_sharpenTexel, on GL texel coordinates: index + 1/2).
+    // sharpened along d's axis.
     glm::vec4 sampleDirectional(const glm::vec3& p, size_t d, int level) {
         openvdb::Vec3R xyz = levelCoord(p, level);
-        if (mp->sharpen > 1.f) {
-            const size_t a = d / 2;
-            xyz[a] = double(gpu::cone_sharpenTexel(float(xyz[a]) + 0.5f, mp->sharpen) - 0.5f);
-        }
+        if (mp->sharpen > 1.f) xyz = sharpenAlong(xyz, d / 2);
         const float a = openvdb::tools::BoxSampler::sample(*dirOpacity[d][size_t(level - 1)], xyz);
         if (dirRadiance[d].empty()) return glm::vec4(0.f, 0.f, 0.f, a);
         const openvdb::Vec3s c = openvdb::tools::BoxSampler::sample(*dirRadiance[d][size_t(level - 1)], xyz);
@@ -128,12 +132,10 @@ struct LevelSampler {
     // (cone_sampleBaseSharpened); else one trilinear fetch.
     glm::vec4 sampleBase(const glm::vec3& p, const glm::vec3& d) {
         if (!(mp->sharpen > 1.f)) return sampleLevel(p, 0);
-        auto along = [&](int a) {
-            openvdb::Vec3R xyz = levelCoord(p, 0);
-            xyz[a] = double(gpu::cone_sharpenTexel(float(xyz[a]) + 0.5f, mp->sharpen) - 0.5f);
-            return sampleLevelAt(xyz, 0);
-        };
-        return gpu::cone_blendDirectional(gpu::cone_anisoWeights(d), along(0), along(1), along(2));
+        const openvdb::Vec3R xyz = levelCoord(p, 0);
+        const glm::vec4 x = sampleLevelAt(sharpenAlong(xyz, 0), 0), y = sampleLevelAt(sharpenAlong(xyz, 1), 0),
+                        z = sampleLevelAt(sharpenAlong(xyz, 2), 0);
+        return gpu::cone_blendDirectional(gpu::cone_anisoWeights(d), x, y, z);
     }
 
     // The fetches of one directional sample at footprint 2^lod: the textures' own (one or
