@@ -66,7 +66,8 @@ results: build
 # Regenerates the convergence tables of docs/convergence.md (both backends, 32^3..256^3; the
 # default march, the lanes on a cubic grid, and those lanes over optical-depth levels; the total
 # error of the schedule that refines the cones with the voxels; on the sparse backend, 32 cones
-# in lanes and the schedule to 512^3, trilinear and with vct.sharpen=4; AO, then
+# in lanes and the schedule to 512^3, trilinear and with vct.sharpen=4; 6 and 32 cones in lanes
+# and the schedule sharpened, parallel and aimed (vct.aim); AO, then
 # GI on the emitting families) and the Cornell box's per-surface GI table.
 convergence: build
 	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend gl --markdown docs/convergence_gl.md
@@ -91,6 +92,14 @@ convergence: build
 		--cases ' off' --markdown docs/convergence_schedule_vdb_512.md
 	./$(BUILD)/bench_convergence --schedule 64:6,128:16,256:64:64,512:64:64 --backend vdb --param vct.grid=cube \
 		--param vct.sharpen=4 --cases ' off' --markdown docs/convergence_schedule_vdb_512_sharpen.md
+	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend vdb --param vct.lanes=0 --param vct.grid=cube \
+		--param vct.sharpen=4 --markdown docs/convergence_vdb_lanes_sharpen.md
+	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend vdb --param vct.lanes=0 --param vct.grid=cube \
+		--param vct.sharpen=4 --param vct.aim=1 --markdown docs/convergence_vdb_lanes_sharpen_aim.md
+	./$(BUILD)/bench_convergence --res 128,256,512 --backend vdb --param vct.cones=32 --param vct.lanes=31 \
+		--param vct.grid=cube --param vct.sharpen=4 --param vct.aim=1 --markdown docs/convergence_vdb_lanes32_sharpen_aim.md
+	./$(BUILD)/bench_convergence --schedule 64:6,128:16,256:64:64,512:64:64 --backend vdb --param vct.grid=cube \
+		--param vct.sharpen=4 --param vct.aim=1 --cases ' off' --markdown docs/convergence_schedule_vdb_512_sharpen_aim.md
 	$(MAKE) convergence-gi
 
 convergence-gi: build

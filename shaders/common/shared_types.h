@@ -13,7 +13,7 @@ using mat3 = glm::mat3; using mat4 = glm::mat4;
 using uint = std::uint32_t;
 // GLSL's built-ins for the inline functions of shared headers (scalars and vectors alike).
 using glm::any; using glm::clamp; using glm::dot; using glm::exp2; using glm::floor; using glm::greaterThan;
-using glm::lessThan; using glm::log2; using glm::max; using glm::min;
+using glm::lessThan; using glm::log2; using glm::max; using glm::min; using glm::normalize;
 }}  // namespace vct::gpu
 #define VCT_BEGIN_NAMESPACE namespace vct { namespace gpu {
 #define VCT_END_NAMESPACE }}

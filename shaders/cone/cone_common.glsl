@@ -120,7 +120,9 @@ ConeGather cone_gatherVoxel(ConeGather g, vec3 p, vec3 n, vec3 ng, float offset,
             g.radiance += cone.w * sky;
             continue;
         }
-        ConeResult r = cone_marchVolume(m, origin, d, h0, rise, maxDist, falloff);
+        // vct.aim: towards the point the lane's ray from p reaches at maxDist.
+        vec3 marched = u.lanes.z != 0 ? cone_aimedDirection(d, ng, offset, maxDist) : d;
+        ConeResult r = cone_marchVolume(m, origin, marched, h0, dot(marched, ng), maxDist, falloff);
         g.radiance += cone.w * (r.radiance + (1.0 - r.alpha) * sky);
         g.occlusion += cone.w * r.alpha;
         g.samples += r.samples;

@@ -182,7 +182,8 @@ struct ConeUniforms {
     ivec4 trace;           // pixel passes: x = trace scale (vct.trace-scale), y = stage (CONE_STAGE_*),
                            // z = the own stage's first list entry (dispatches of at most 65535 groups),
                            // w = split gathers (CONE_SPLIT_RESUME | CONE_SPLIT_CARRY; 0 = whole)
-    ivec4 lanes;           // x = lanes per cone of the set, y = the set-wide index of cones[0] (this slice's first)
+    ivec4 lanes;           // x = lanes per cone of the set, y = the set-wide index of cones[0] (this slice's first),
+                           // z = vct.aim (1: cone_aimedDirection)
     vec4 coneAxes[CONE_MAX_SET_CONES];  // the set's cones before the lanes (xyz = direction, tangent frame)
     vec4 cones[CONE_BLOCK_CONES];  // xyz = direction in the tangent frame (z = normal), w = weight
 };
@@ -199,6 +200,22 @@ VCT_CONST int CONE_LANE_MARCHED = 2;
 CONE_FN int cone_laneState(float rise, float axisRise) {
     if (axisRise <= 0.0f) return CONE_LANE_CLOSED;
     return rise > 0.0f ? CONE_LANE_MARCHED : CONE_LANE_OPEN;
+}
+// vct.aim: the direction a marched cone takes from its start, `offset` voxels up the geometric
+// normal ng, so that it meets its own ray from the shading point at `maxDist` (voxels) instead
+// of running parallel to it `offset` voxels higher. The cone model's cones start at the shading
+// point; the offset is there only to clear the surface's own voxels, and a cone that keeps it
+// to the end sees an occluder `offset` voxels closer than it is: under a sheet at height h a
+// cone whose ray ends just below the sheet at R ends inside it. That is a band of directions
+// offset / R wide in dot(d, ng), first order in the voxel but with a constant the size of the
+// offset. Aimed, the displacement falls linearly from `offset` at the start to 0 at maxDist. A
+// direction whose ray at maxDist is less than `offset` above the tangent plane would aim
+// downwards and is kept level (its component along ng removed), offset voxels above the plane.
+// d unit, dot(d, ng) > 0 (a marched cone), maxDist > 0.
+CONE_FN vec3 cone_aimedDirection(vec3 d, vec3 ng, float offset, float maxDist) {
+    vec3 a = d * maxDist - ng * offset;
+    a = a - ng * min(dot(a, ng), 0.0f);
+    return dot(a, a) > 0.0f ? normalize(a) : d;
 }
 // The set's cone of lane `lane` (set-wide index; lanes of a cone are consecutive).
 CONE_FN int cone_laneCone(int lane, int lanesPerCone) { return lane / max(lanesPerCone, 1); }

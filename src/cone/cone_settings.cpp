@@ -103,6 +103,14 @@ const SettingsTable<ConeSettings>& coneSettings() {
                   "converge to 512^3, while the default 6 wide cones, whose footprint error the leak offsets, turn "
                   "darker. Needs vct.aniso=1 (dense grid or sparse backend); costs one fetch per axis and level a "
                   "sample blends (up to 6, against 1 on an AO grid or 3 on a lit one; 3 on the base level against 1)")
+            .flag("vct.aim", &ConeSettings::aim,
+                  "march each cone from its start (vct.offset voxels up the geometric normal) towards the point "
+                  "its ray from the surface reaches at the maximum distance (R for AO), not parallel to that ray: "
+                  "the offset then displaces a cone by offset (1 - t / R) instead of offset all the way, so an "
+                  "occluder near R is seen where it is (under a sheet, the cones whose rays end just below it "
+                  "no longer end inside it). A direction that would aim below the tangent plane stays level. "
+                  "Measured on the closed-form families with 6 cones in auto lanes on a cube (vct.sharpen=4): "
+                  "mean voxel error at 256^3 0.025 -> 0.018. 0 = parallel (Crassin 2011). All backends")
             .integer("vct.trace-scale", &ConeSettings::traceScale, 1, gpu::CONE_MAX_TRACE_SCALE,
                      "trace the cones of one pixel per s x s block and resolve the others from the nearest blocks "
                      "that share their surface (normal and tangent plane; a pixel sharing none traces its own): "

@@ -39,6 +39,7 @@ struct MarchParams {
     std::vector<glm::vec4> axes;        // the set's cones (ConeLanes::axes)
     int lanesPerCone = 1;
     float sharpen = 1.f;                // vct.sharpen when the levels are directional, else 1
+    bool aim = false;                   // vct.aim (gpu::cone_aimedDirection)
 };
 
 // One thread's view of the levels: the volume of gpu::cone_marchVolume.
@@ -241,7 +242,10 @@ Gather gatherVoxel(LevelSampler& sampler, const glm::vec3& p,
             g.radiance += cone.w * sky;
             continue;
         }
-        const gpu::ConeResult r = gpu::cone_marchVolume(sampler, sampler.mp->march, origin, d, h0, rise, maxDist, falloff);
+        // vct.aim: towards the point the lane's ray from p reaches at maxDist.
+        const glm::vec3 marched = mp.aim ? gpu::cone_aimedDirection(d, ng, offset, maxDist) : d;
+        const gpu::ConeResult r =
+            gpu::cone_marchVolume(sampler, sampler.mp->march, origin, marched, h0, glm::dot(marched, ng), maxDist, falloff);
         g.radiance += cone.w * (r.radiance + (1.f - r.alpha) * sky);
         g.occlusion += cone.w * r.alpha;
         g.samples += r.samples;
@@ -271,6 +275,7 @@ MarchParams marchParams(const SparseVoxelScene& v, const ConeSettings& s) {
     mp.march.levelBase = glm::vec3(v.resolution);
     mp.offset = s.offsetVoxels;
     mp.sharpen = sharpensLevels(s) ? s.sharpen : 1.f;
+    mp.aim = s.aim;
     mp.maxLod = float(int(v.opacityLevels.size()) - 1);
     mp.res = glm::vec3(v.resolution);
     for (int k = 0; k < int(v.opacityLevels.size()); ++k)

@@ -146,6 +146,12 @@ TEST(RenderCli, ExplainPrintsRunAndSkippedPasses) {
                         "--explain -o " + dir + "/s.png");
     ASSERT_EQ(sharp.exitCode, 0) << sharp.output;
     EXPECT_NE(sharp.output.find("sharpened along their axis (vct.sharpen=4)"), std::string::npos) << sharp.output;
+    EXPECT_EQ(sharp.output.find("(vct.aim)"), std::string::npos) << sharp.output;
+    // ... and when their cones are aimed at their rays' points at R.
+    auto aimed = runVct("render scenes/cornell_box.gltf --size 16 --ao vct --voxel-res 16 --param vct.aim=1 "
+                        "--explain -o " + dir + "/a.png");
+    ASSERT_EQ(aimed.exitCode, 0) << aimed.output;
+    EXPECT_NE(aimed.output.find("rays' points at the maximum distance (vct.aim)"), std::string::npos) << aimed.output;
 }
 
 TEST(RenderCli, BadInputFailsCleanlyWithoutOutput) {

@@ -168,6 +168,37 @@ TEST(VctConvergence, SparseSharpenedLevelsMatchTheDenseOnes) {
     expectBackendsAgree(params({"vct.lanes=0", "vct.grid=cube", "vct.sharpen=4"}));
 }
 
+// vct.aim (cone_aimedDirection): lanes started vct.offset voxels up the normal are aimed at the
+// points their rays from the surface reach at R. Parallel, every lane runs 1.5 voxels above its
+// ray to the end, and under a sheet the lanes whose rays end just below it end inside it (under
+// the plate of side 2 R at 0.2 R, 64 cones x 64 lanes at 256^3, the open lanes of 0.16..0.2 of
+// rise kept a third of their light). 6 cones in auto lanes on a cube, sharpened, sparse, the
+// open off-screen cases at 128^3: mean voxel error measured 0.038 aimed against 0.055
+// parallel, and the plate of side 2 R at 0.5 R 0.013 against 0.035. The default wide cones
+// do not gain (their footprint, not the offset, dominates) and keep it off.
+TEST(VctConvergence, AimedLanesMeetTheirRaysAtR) {
+    const ParamMap parallel = params({"vct.lanes=0", "vct.grid=cube", "vct.sharpen=4"});
+    const ParamMap aimed = params({"vct.lanes=0", "vct.grid=cube", "vct.sharpen=4", "vct.aim=1"});
+    const std::vector<CaseErrors> before = voxelErrors({128}, "vdb", parallel);
+    const std::vector<CaseErrors> after = voxelErrors({128}, "vdb", aimed);
+    ASSERT_EQ(before.size(), after.size());
+    for (size_t i = 0; i < before.size(); ++i)
+        std::cerr << before[i].name << ": parallel " << before[i].voxel.at(128) << ", aimed " << after[i].voxel.at(128)
+                  << "\n";
+    EXPECT_LT(mean(after, 128), 0.8 * mean(before, 128)) << "mean voxel error of the open cases at 128^3";
+    for (size_t i = 0; i < before.size(); ++i) {
+        if (before[i].name == "plate h=0.5R a=2R off") {
+            EXPECT_LT(after[i].voxel.at(128), 0.6 * before[i].voxel.at(128)) << before[i].name;
+        }
+    }
+}
+
+// Both backends aim alike (cone_common.glsl's gather, sparse_cone.cpp's): every off-screen case
+// at 64^3, sharpened lanes on a cube.
+TEST(VctConvergence, SparseAimedLanesMatchTheDenseOnes) {
+    expectBackendsAgree(params({"vct.lanes=0", "vct.grid=cube", "vct.sharpen=4", "vct.aim=1"}));
+}
+
 // Both backends build and read the depth levels alike (mip_aniso.glsl / sparse_levels.cpp,
 // cone_march.glsl / sparse_cone.cpp): every off-screen case at 64^3, lanes on a cube.
 TEST(VctConvergence, SparseOpticalDepthLevelsMatchTheDenseOnes) {
