@@ -16,6 +16,9 @@ struct VctSettings {
     // The grid's shape over the region: fit (each axis as long as the region needs) or cube
     // (every axis as long as the longest, the region centred). See vct/voxel_region.h.
     std::string grid = "fit";
+    // The grid moved by this fraction of a voxel on every axis (voxel_region.h, shiftedGridRegion):
+    // the same region on another alignment of the voxel lattice.
+    float gridShift = 0.f;
     int clipmapLevels = 0;  // nested levels around the camera (0 = one dense grid)
     int viewLevel = 0;      // mip level the voxel_* AOVs show
 };

@@ -42,6 +42,8 @@ std::string voxelRegionExplanation(const RenderRequest& r) {
     else
         s << "; one dense grid of " << r.voxelRes << " voxels along its longest axis";
     if (vctSettings().read(r.params).grid == "cube") s << ", padded to a cube (vct.grid=cube)";
+    if (const float shift = vctSettings().read(r.params).gridShift; shift != 0.f)
+        s << ", moved by " << shift << " voxel (vct.grid-shift)";
     return s.str();
 }
 
@@ -130,12 +132,28 @@ VoxelRegion chooseRegionBounds(const RenderRequest& r, const Scene& scene, const
 
 }  // namespace
 
+Bounds3 shiftedGridRegion(const Bounds3& b, float shiftVoxels, int voxelRes) {
+    if (shiftVoxels == 0.f || b.empty()) return b;
+    const glm::vec3 move(shiftVoxels * b.maxExtent() / float(std::max(1, voxelRes - 2)));
+    Bounds3 s;
+    s.min = b.min - move;
+    s.max = b.max - move;
+    return s;
+}
+
 VoxelRegion chooseVoxelRegion(const RenderRequest& r, const Scene& scene, const GBuffer* gbuffer,
                               float apertureDeg, float offsetVoxels) {
     VoxelRegion region = chooseRegionBounds(r, scene, gbuffer, apertureDeg, offsetVoxels);
     if (vctSettings().read(r.params).grid == "cube") {
         region.bounds = cubeAround(region.bounds);
         region.why += "; padded to a cube around its centre (vct.grid=cube)";
+    }
+    const float shift = vctSettings().read(r.params).gridShift;
+    if (shift != 0.f) {
+        region.bounds = shiftedGridRegion(region.bounds, shift, r.voxelRes);
+        std::ostringstream why;
+        why << "; the grid moved by " << shift << " voxel (vct.grid-shift)";
+        region.why += why.str();
     }
     return region;
 }

@@ -199,6 +199,20 @@ TEST(VctConvergence, SparseAimedLanesMatchTheDenseOnes) {
     expectBackendsAgree(params({"vct.lanes=0", "vct.grid=cube", "vct.sharpen=4", "vct.aim=1"}));
 }
 
+// vct.grid-shift moves the lattice on both backends alike (one region, voxel_region.cpp): every
+// off-screen case at 64^3, sharpened lanes on a cube, half a voxel over. A bare floor stays
+// open whichever voxel it falls in, moved up to 0.99 of one either way (the grid's padding voxel
+// holds it).
+TEST(VctConvergence, ShiftedGridsAgreeAcrossBackendsAndKeepTheFloorOpen) {
+    expectBackendsAgree(params({"vct.lanes=0", "vct.grid=cube", "vct.sharpen=4", "vct.grid-shift=0.5"}));
+    const AoConvergenceCase c = bareFloorUnderATallGrid();
+    for (const char* shift : {"vct.grid-shift=0.5", "vct.grid-shift=0.99", "vct.grid-shift=-0.99"})
+        for (const char* backend : {"gl", "vdb"}) {
+            const std::vector<double> ao = vctAoAt(c, 64, backend, params({shift}));
+            EXPECT_GT(*std::min_element(ao.begin(), ao.end()), 0.99) << backend << ", " << shift;
+        }
+}
+
 // Both backends build and read the depth levels alike (mip_aniso.glsl / sparse_levels.cpp,
 // cone_march.glsl / sparse_cone.cpp): every off-screen case at 64^3, lanes on a cube.
 TEST(VctConvergence, SparseOpticalDepthLevelsMatchTheDenseOnes) {
