@@ -3,6 +3,7 @@
 #include "gl/readback.h"
 #include "vct/vct_passes.h"
 #include "vct/vct_settings.h"
+#include "voxelize/voxel_grid.h"
 
 #include <algorithm>
 #include <cmath>
@@ -41,9 +42,9 @@ std::string voxelRegionExplanation(const RenderRequest& r) {
         s << "; " << levels << " clipmap levels of " << r.voxelRes << "^3 around the camera (isotropic mips)";
     else
         s << "; one dense grid of " << r.voxelRes << " voxels along its longest axis";
-    if (vctSettings().read(r.params).grid == "cube") s << ", padded to a cube (vct.grid=cube)";
-    if (const float shift = vctSettings().read(r.params).gridShift; shift != 0.f)
-        s << ", moved by " << shift << " voxel (vct.grid-shift)";
+    const VctSettings vs = vctSettings().read(r.params);
+    if (vs.grid == "cube") s << ", padded to a cube (vct.grid=cube)";
+    if (vs.gridShift != 0.f) s << ", moved by " << vs.gridShift << " voxel (vct.grid-shift)";
     return s.str();
 }
 
@@ -134,7 +135,8 @@ VoxelRegion chooseRegionBounds(const RenderRequest& r, const Scene& scene, const
 
 Bounds3 shiftedGridRegion(const Bounds3& b, float shiftVoxels, int voxelRes) {
     if (shiftVoxels == 0.f || b.empty()) return b;
-    const glm::vec3 move(shiftVoxels * b.maxExtent() / float(std::max(1, voxelRes - 2)));
+    // The voxel the layout itself gives b, so the move follows its rule.
+    const glm::vec3 move(shiftVoxels * makeGridLayout(b, voxelRes).voxelSize);
     Bounds3 s;
     s.min = b.min - move;
     s.max = b.max - move;
@@ -144,15 +146,15 @@ Bounds3 shiftedGridRegion(const Bounds3& b, float shiftVoxels, int voxelRes) {
 VoxelRegion chooseVoxelRegion(const RenderRequest& r, const Scene& scene, const GBuffer* gbuffer,
                               float apertureDeg, float offsetVoxels) {
     VoxelRegion region = chooseRegionBounds(r, scene, gbuffer, apertureDeg, offsetVoxels);
-    if (vctSettings().read(r.params).grid == "cube") {
+    const VctSettings vs = vctSettings().read(r.params);
+    if (vs.grid == "cube") {
         region.bounds = cubeAround(region.bounds);
         region.why += "; padded to a cube around its centre (vct.grid=cube)";
     }
-    const float shift = vctSettings().read(r.params).gridShift;
-    if (shift != 0.f) {
-        region.bounds = shiftedGridRegion(region.bounds, shift, r.voxelRes);
+    if (vs.gridShift != 0.f) {
+        region.bounds = shiftedGridRegion(region.bounds, vs.gridShift, r.voxelRes);
         std::ostringstream why;
-        why << "; the grid moved by " << shift << " voxel (vct.grid-shift)";
+        why << "; the grid moved by " << vs.gridShift << " voxel (vct.grid-shift)";
         region.why += why.str();
     }
     return region;

@@ -48,8 +48,8 @@ Bounds3 cubeAround(const Bounds3& b);
 // one a grid of `voxelRes` along the grown box's longest axis will have (makeGridLayout).
 Bounds3 fitAoRegion(const Bounds3& visible, const Bounds3& scene, float reach, float marginVoxels, int voxelRes);
 
-// vct.grid-shift: `b` moved by `shiftVoxels` of the voxel a grid of `voxelRes` over it has
-// (makeGridLayout: its longest extent / (voxelRes - 2)) towards -x, -y, -z, so that every
+// vct.grid-shift: `b` moved by `shiftVoxels` of the voxel makeGridLayout(b, voxelRes) has
+// (its longest extent / (voxelRes - 2)) towards -x, -y, -z, so that every
 // world point's voxel coordinates grow by shiftVoxels: the same voxel size and counts, the
 // lattice moved. |shiftVoxels| < 1: makeGridLayout's padding voxel on each side holds what the
 // move carries past b.
