@@ -9,18 +9,30 @@
 //                     [--cases SUBSTRING] [--markdown FILE]
 //   bench_convergence --schedule RES:CONES[:LANES],... [the same options but --res]
 //
+//   bench_convergence --lanes POINT [--res ...] [--param ...] [--cases SUBSTRING] [--all-lanes]
+//
+// --lanes traces one point of each case lane by lane (the sparse march, --backend vdb): for each
+// lane its VCT occlusion beside its own cone's exact occlusion, summed by where the lane's ray
+// meets an occluder relative to R (in voxels), so that an error can be told apart as light
+// passing an occluder the lane crosses, or occlusion reached past R or past an edge.
 // --markdown writes the tables as a Markdown section (docs/convergence.md is made of them).
 // --schedule refines the cone set with the voxels (each step its resolution, vct.cones and
 // vct.lanes on top of --param) and checks the total error instead: it never grows from step
 // to step and is at most 0.05 at the last (totalErrorRefines).
 #include "bench_main.h"
+#include "core/errors.h"
 #include "eval/convergence.h"
 #include "gl/context.h"
 #include "util/atomic_file.h"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
+#include <iterator>
+#include <string>
 #include <exception>
 #include <iomanip>
 #include <sstream>
@@ -90,6 +102,66 @@ int runSchedule(const std::vector<ConeScheduleStep>& steps, const std::string& s
     return 0;
 }
 
+// The bands of a lane's ray hit, (hit - R) in voxels: below each edge, past the last, or no hit
+// within 4 R.
+constexpr float kBandEdges[] = {-16.f, -8.f, -4.f, 0.f, 4.f, 8.f, 16.f};
+constexpr size_t kBands = std::size(kBandEdges) + 2;
+
+size_t hitBand(const AoLaneRecord& r, float voxelSize, float radius) {
+    if (!std::isfinite(r.rayHit)) return kBands - 1;
+    const float x = (r.rayHit - radius) / voxelSize;
+    size_t b = 0;
+    while (b < std::size(kBandEdges) && x >= kBandEdges[b]) ++b;
+    return b;
+}
+
+std::string bandName(size_t b) {
+    char buf[48];
+    if (b == 0) std::snprintf(buf, sizeof buf, "< R%+g", kBandEdges[0]);
+    else if (b == std::size(kBandEdges)) std::snprintf(buf, sizeof buf, ">= R%+g", kBandEdges[b - 1]);
+    else if (b == kBands - 1) std::snprintf(buf, sizeof buf, "none");
+    else std::snprintf(buf, sizeof buf, "[R%+g, R%+g)", kBandEdges[b - 1], kBandEdges[b]);
+    return buf;
+}
+
+// --lanes: each case's point `point`, lane by lane, at every resolution.
+int runLanes(const std::vector<int>& resolutions, const ParamMap& pm, const std::string& filter, size_t point,
+             bool allLanes) {
+    for (const AoConvergenceCase& c : aoConvergenceCases()) {
+        if (!filter.empty() && c.name.find(filter) == std::string::npos) continue;
+        for (int res : resolutions) {
+            const AoLaneTrace t = vctAoLanesAt(c, res, pm, point);
+            std::printf("%s res %d point %zu (%.2f, %.2f): %zu lanes of %.2f deg, voxel %.4f R\n", c.name.c_str(), res,
+                        point, c.points[point].x, c.points[point].z, t.lanes.size(), t.laneApertureDeg,
+                        t.voxelSize / t.radius);
+            // Per band: lanes, summed VCT and exact occlusion, and the band's share of the point's
+            // voxel error, -sum w (alpha - exact).
+            std::array<std::array<double, 4>, kBands> bands{};
+            double vctAo = 1.0, modelAo = 1.0;
+            for (const AoLaneRecord& r : t.lanes) {
+                const size_t b = hitBand(r, t.voxelSize, t.radius);
+                bands[b][0] += 1.0;
+                bands[b][1] += r.lane.alpha;
+                bands[b][2] += r.exactOcclusion;
+                bands[b][3] -= r.lane.weight * (r.lane.alpha - r.exactOcclusion);
+                vctAo -= r.lane.weight * r.lane.alpha;
+                modelAo -= r.lane.weight * r.exactOcclusion;
+                if (allLanes)
+                    std::printf("  cone %d dir (%+.3f, %+.3f, %+.3f) w %.5f hit %s vct %.4f exact %.4f\n", r.lane.cone,
+                                r.lane.direction.x, r.lane.direction.y, r.lane.direction.z, r.lane.weight,
+                                bandName(b).c_str(), r.lane.alpha, r.exactOcclusion);
+            }
+            for (size_t b = 0; b < kBands; ++b)
+                if (bands[b][0] > 0.0)
+                    std::printf("  hit %-16s %4.0f lanes  vct %.3f  exact %.3f  error %+.4f\n", bandName(b).c_str(),
+                                bands[b][0], bands[b][1] / bands[b][0], bands[b][2] / bands[b][0], bands[b][3]);
+            std::printf("  AO: vct %.4f, the lanes' cone model %.4f, error %+.4f\n", vctAo, modelAo, vctAo - modelAo);
+            std::fflush(stdout);
+        }
+    }
+    return 0;
+}
+
 int run(int argc, char** argv) {
     CLI::App app{"VCT convergence on closed-form AO cases"};
     std::string resList = "32,64,128,256", backend = "gl", filter, markdown, schedule;
@@ -105,7 +177,18 @@ int run(int argc, char** argv) {
     app.add_option("--markdown", markdown, "write the tables as Markdown to this file");
     app.add_flag("--gi", gi, "score GI on the emitting families instead of AO");
     app.add_flag("--detail", detail, "print every point: exact, cone model, VCT at each resolution");
+    int lanesPoint = -1;
+    bool allLanes = false;
+    auto* lanesOption =
+        app.add_option("--lanes", lanesPoint, "trace this point of each case lane by lane (the sparse march, AO)")
+            ->check(CLI::NonNegativeNumber)
+            ->excludes("--schedule")
+            ->excludes("--gi")
+            ->excludes("--markdown");
+    app.add_flag("--all-lanes", allLanes, "with --lanes: print every lane, not only the sums by hit distance");
     CLI11_PARSE(app, argc, argv);
+    if (lanesOption->count() && app.count("--backend") && backend != "vdb")
+        throw UsageError("--lanes traces the sparse march (--backend vdb); the dense one marches the same lanes");
     ParamMap pm;
     for (const auto& p : params) pm.set(p);
     std::string options = " --backend " + backend + (gi ? " --gi" : "");
@@ -120,6 +203,7 @@ int run(int argc, char** argv) {
     std::stringstream ss(resList);
     for (std::string item; std::getline(ss, item, ',');) resolutions.push_back(std::stoi(item));
     GlContext::shared();
+    if (lanesPoint >= 0) return runLanes(resolutions, pm, filter, size_t(lanesPoint), allLanes);
 
     std::ostringstream md;
     md << "# VCT " << (gi ? "GI" : "AO") << " convergence tables, --backend " << backend

@@ -5,6 +5,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -12,35 +13,39 @@ namespace vct {
 
 namespace {
 
-bool hitRect(const AnalyticRect& r, const glm::vec3& o, const glm::vec3& d, float tMax) {
+// Each hit test gives the distance t in (0, tMax] at which origin o + t d meets the occluder,
+// or kNoHit.
+constexpr float kNoHit = INFINITY;
+
+float hitRect(const AnalyticRect& r, const glm::vec3& o, const glm::vec3& d, float tMax) {
     const glm::vec3 n = glm::cross(r.u, r.v);
     const float denom = glm::dot(d, n);
-    if (denom == 0.f) return false;
+    if (denom == 0.f) return kNoHit;
     const float t = glm::dot(r.center - o, n) / denom;
-    if (!(t > 0.f && t <= tMax)) return false;
+    if (!(t > 0.f && t <= tMax)) return kNoHit;
     const glm::vec3 q = o + t * d - r.center;
     const float uu = glm::dot(r.u, r.u), vv = glm::dot(r.v, r.v);
-    return std::abs(glm::dot(q, r.u)) <= uu && std::abs(glm::dot(q, r.v)) <= vv;
+    return std::abs(glm::dot(q, r.u)) <= uu && std::abs(glm::dot(q, r.v)) <= vv ? t : kNoHit;
 }
 
-bool hitDisc(const AnalyticDisc& c, const glm::vec3& o, const glm::vec3& d, float tMax) {
+float hitDisc(const AnalyticDisc& c, const glm::vec3& o, const glm::vec3& d, float tMax) {
     const float denom = glm::dot(d, c.normal);
-    if (denom == 0.f) return false;
+    if (denom == 0.f) return kNoHit;
     const float t = glm::dot(c.center - o, c.normal) / denom;
-    if (!(t > 0.f && t <= tMax)) return false;
+    if (!(t > 0.f && t <= tMax)) return kNoHit;
     const glm::vec3 q = o + t * d - c.center;
-    return glm::dot(q, q) <= c.radius * c.radius;
+    return glm::dot(q, q) <= c.radius * c.radius ? t : kNoHit;
 }
 
-bool hitSphere(const AnalyticSphere& s, const glm::vec3& o, const glm::vec3& d, float tMax) {
+float hitSphere(const AnalyticSphere& s, const glm::vec3& o, const glm::vec3& d, float tMax) {
     const glm::vec3 oc = o - s.center;
     const float b = glm::dot(oc, d), c = glm::dot(oc, oc) - s.radius * s.radius;
     const float disc = b * b - c;
-    if (disc < 0.f) return false;
+    if (disc < 0.f) return kNoHit;
     const float root = std::sqrt(disc);
     const float t0 = -b - root, t1 = -b + root;
     const float t = t0 > 0.f ? t0 : t1;
-    return t > 0.f && t <= tMax;
+    return t > 0.f && t <= tMax ? t : kNoHit;
 }
 
 // Mean of f over the midpoint grid of the unit square, rows in parallel (deterministic:
@@ -61,12 +66,20 @@ double squareMean(int n, const std::function<double(double, double)>& f) {
 
 bool AnalyticOccluders::occludes(const glm::vec3& o, const glm::vec3& d, float tMax) const {
     for (const auto& r : rects)
-        if (hitRect(r, o, d, tMax)) return true;
+        if (hitRect(r, o, d, tMax) <= tMax) return true;
     for (const auto& c : discs)
-        if (hitDisc(c, o, d, tMax)) return true;
+        if (hitDisc(c, o, d, tMax) <= tMax) return true;
     for (const auto& s : spheres)
-        if (hitSphere(s, o, d, tMax)) return true;
+        if (hitSphere(s, o, d, tMax) <= tMax) return true;
     return false;
+}
+
+float AnalyticOccluders::firstHit(const glm::vec3& o, const glm::vec3& d, float tMax) const {
+    float t = kNoHit;
+    for (const auto& r : rects) t = std::min(t, hitRect(r, o, d, tMax));
+    for (const auto& c : discs) t = std::min(t, hitDisc(c, o, d, tMax));
+    for (const auto& s : spheres) t = std::min(t, hitSphere(s, o, d, tMax));
+    return t;
 }
 
 double analyticAo(const AnalyticOccluders& occ, const glm::vec3& p, const glm::vec3& n, float radius,

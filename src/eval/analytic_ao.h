@@ -40,6 +40,8 @@ struct AnalyticOccluders {
     std::vector<AnalyticSphere> spheres;
     // True if the ray origin + t dir (unit dir) meets an occluder for t in (0, tMax].
     bool occludes(const glm::vec3& origin, const glm::vec3& dir, float tMax) const;
+    // The distance t in (0, tMax] of the nearest occluder along the ray, or infinity.
+    float firstHit(const glm::vec3& origin, const glm::vec3& dir, float tMax) const;
 };
 
 // The quadrature's resolution: samples per axis of the unit square mapped to the hemisphere

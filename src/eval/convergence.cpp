@@ -10,8 +10,11 @@
 #include "render/plan.h"
 #include "scene/camera.h"
 #include "scene/scene_builder.h"
+#include "vct/sparse_vct.h"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 
@@ -250,8 +253,9 @@ std::vector<double> gatheredFromAo(std::vector<double> ao) {
 // The registry's VCT method (--ao vct or --gi vct) at a case's points, on a G-buffer of the
 // points (and, on screen, the visible occluder points): the AO, or the indirect light's first
 // channel, at the scored points.
+// `inspect`, when given, sees the method's context once it has run.
 std::vector<double> vctAt(const AoConvergenceCase& c, int voxelRes, const std::string& backend, const ParamMap& params,
-                          bool gi) {
+                          bool gi, const std::function<void(MethodContext&)>& inspect = {}) {
     GlContext& gl = GlContext::shared();
     const Scene& scene = c.scene;
     const GpuScene gpu = uploadScene(scene);
@@ -297,6 +301,7 @@ std::vector<double> vctAt(const AoConvergenceCase& c, int voxelRes, const std::s
     else
         requireMethod(MethodKind::AO, "vct", "--ao")->execute(ctx);
     gl.checkErrors("convergence " + c.name);
+    if (inspect) inspect(ctx);
     const ResourceId id = gi ? kGiIndirect : kAo;
     const FrameResource* res = outputs.find(id);
     if (!res) throw InternalError("vctAt", "the VCT method wrote no " + std::string(gi ? "indirect light" : "AO"));
@@ -318,6 +323,34 @@ std::vector<double> coneModelAoAt(const AoConvergenceCase& c, const ParamMap& pa
 std::vector<double> vctAoAt(const AoConvergenceCase& c, int voxelRes, const std::string& backend,
                             const ParamMap& params) {
     return vctAt(c, voxelRes, backend, params, false);
+}
+
+AoLaneTrace vctAoLanesAt(const AoConvergenceCase& c, int voxelRes, const ParamMap& params, size_t point) {
+    if (point >= c.points.size())
+        throw UsageError("point " + std::to_string(point) + ": the case '" + c.name + "' has " +
+                         std::to_string(c.points.size()) + " points (0.." + std::to_string(c.points.size() - 1) + ")");
+    const ConeSettings cone = readConeSettings(params);
+    AoLaneTrace trace;
+    trace.radius = c.radius;
+    vctAt(c, voxelRes, "vdb", params, false, [&](MethodContext& ctx) {
+        const SparseFrame& f = renderedSparseFrame(ctx);
+        const SparseVoxelScene& v = *f.voxels;
+        trace.voxelSize = v.voxelSize;
+        trace.laneApertureDeg = coneMarchLanes(cone, std::max(v.resolution.x, std::max(v.resolution.y, v.resolution.z)))
+                                    .apertureDeg;
+        for (const SparseLane& lane : sparseConeAOLanes(v, f.points[point], c.radius, cone))
+            trace.lanes.push_back({lane, 0.0, 0.f});
+    });
+    const glm::vec3 p = c.points[point], n = c.shadingNormal;
+    for (AoLaneRecord& r : trace.lanes) {
+        r.rayHit = c.occluders.firstHit(p, r.lane.direction, 4.f * c.radius);
+        r.exactOcclusion =
+            r.lane.tangent.z > 0.f
+                ? 1.0 - analyticConeModelAo(c.occluders, p, n, c.radius, {glm::vec4(r.lane.tangent, 1.f)},
+                                            trace.laneApertureDeg)
+                : double(r.lane.alpha);
+    }
+    return trace;
 }
 
 std::vector<AoConvergenceCase> giConvergenceCases() {

@@ -16,6 +16,7 @@
 #include "core/params.h"
 #include "eval/analytic_ao.h"
 #include "scene/scene.h"
+#include "vdb/sparse_cone.h"
 
 #include <nlohmann/json.hpp>
 
@@ -70,6 +71,28 @@ std::vector<double> coneModelGiAt(const AoConvergenceCase& c, const ParamMap& pa
 // albedo 1.
 std::vector<double> vctGiAt(const AoConvergenceCase& c, int voxelRes, const std::string& backend,
                             const ParamMap& params);
+
+// One lane of VCT's AO gather at a case's point (--backend vdb, the lanes as the sparse march
+// runs them), beside what exact visibility says of the same lane.
+struct AoLaneRecord {
+    SparseLane lane;
+    // The occluded fraction of the lane's own cone (its axis and the lanes' aperture, cut at R;
+    // analyticConeModelAo): what the lane converges to. A lane below the surface's plane is decided
+    // by the plane (cone_laneState) and carries VCT's value.
+    double exactOcclusion = 0.0;
+    // Where the lane's ray from the point meets an occluder (world units; infinity when not
+    // within 4 R).
+    float rayHit = 0.f;
+};
+struct AoLaneTrace {
+    float voxelSize = 0.f;        // world units
+    float radius = 0.f;           // R, world units
+    float laneApertureDeg = 0.f;  // each lane's full apex angle
+    std::vector<AoLaneRecord> lanes;
+};
+// The lanes of point `point` (an index into c.points) at `voxelRes`, with `params` as vctAoAt
+// takes them (--backend vdb: the dense path marches the same lanes).
+AoLaneTrace vctAoLanesAt(const AoConvergenceCase& c, int voxelRes, const ParamMap& params, size_t point);
 
 // RMS and largest absolute difference of a - b.
 struct PointError {

@@ -1,6 +1,7 @@
 #include "vct/sparse_vct.h"
 
 #include "cone/cone_bounce.h"
+#include "core/errors.h"
 
 #include "vct/vct_passes.h"
 #include "vct/voxel_region.h"
@@ -8,8 +9,13 @@
 
 namespace vct {
 
+namespace {
+// The render's state key of its SparseFrame.
+const char* const kSparseFrameKey = "vct.sparse";
+}  // namespace
+
 SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache, const ConeSettings& cone) {
-    SparseFrame& f = ctx.frame.get<SparseFrame>("vct.sparse");
+    SparseFrame& f = ctx.frame.get<SparseFrame>(kSparseFrameKey);
     if (f.voxels) return f;
     const RenderRequest& r = ctx.request;
     const bool inject = ctx.plan.runs(kPassInject);
@@ -62,6 +68,12 @@ SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache, const 
         p.valid = g.valid;
         f.points.push_back(p);
     }
+    return f;
+}
+
+const SparseFrame& renderedSparseFrame(MethodContext& ctx) {
+    const SparseFrame& f = ctx.frame.get<SparseFrame>(kSparseFrameKey);
+    if (!f.voxels) throw InternalError("renderedSparseFrame", "no sparse voxels in this render (--backend vdb)");
     return f;
 }
 

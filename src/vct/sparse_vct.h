@@ -30,6 +30,11 @@ struct SparseFrame {
 // session unless request.reuseSceneData is false); fills extra["voxels"].
 SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache, const ConeSettings& cone);
 
+// The sparse grids and points the method built in this render (after it ran with --backend
+// vdb), for tools that look inside its march (eval/convergence.h's lane trace). Throws
+// InternalError when it built none.
+const SparseFrame& renderedSparseFrame(MethodContext& ctx);
+
 // The cone pass of `kind` over the sparse grids: AO into kAo, GI into kGiIndirect.
 void traceSparse(MethodContext& ctx, MethodKind kind, const SparseFrame& frame, const ConeSettings& cone);
 

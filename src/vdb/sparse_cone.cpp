@@ -218,9 +218,10 @@ struct Gather {
 
 // cone_gatherVoxel from voxel-space p over the march's lanes: the cones start `offset` voxels along ng, `h0` is that
 // start's height above the tangent plane for the plane limit.
+// `lanes`, when given, gets each lane's direction, weight and occlusion.
 Gather gatherVoxel(LevelSampler& sampler, const glm::vec3& p,
                    const glm::vec3& n, const glm::vec3& ng, float offset, float h0, float maxDist, float falloff,
-                   float sky) {
+                   float sky, std::vector<SparseLane>* lanes = nullptr) {
     const glm::mat3 frame = gpu::frame_fromZ(n);
     const glm::vec3 origin = p + ng * offset;
     Gather g;
@@ -234,12 +235,18 @@ Gather gatherVoxel(LevelSampler& sampler, const glm::vec3& p,
                 ? glm::dot(frame * glm::vec3(mp.axes[size_t(gpu::cone_laneCone(int(c), mp.lanesPerCone))]), ng)
                 : rise;
         const int state = gpu::cone_laneState(rise, axisRise);
+        auto record = [&](float alpha) {
+            if (lanes)
+                lanes->push_back({gpu::cone_laneCone(int(c), mp.lanesPerCone), d, glm::vec3(cone), cone.w, alpha});
+        };
         if (state == gpu::CONE_LANE_CLOSED) {
             g.occlusion += cone.w;
+            record(1.f);
             continue;
         }
         if (state == gpu::CONE_LANE_OPEN) {
             g.radiance += cone.w * sky;
+            record(0.f);
             continue;
         }
         // vct.aim: towards the point the lane's ray from p reaches at maxDist.
@@ -249,6 +256,7 @@ Gather gatherVoxel(LevelSampler& sampler, const glm::vec3& p,
         g.radiance += cone.w * (r.radiance + (1.f - r.alpha) * sky);
         g.occlusion += cone.w * r.alpha;
         g.samples += r.samples;
+        record(r.alpha);
     }
     return g;
 }
@@ -256,10 +264,20 @@ Gather gatherVoxel(LevelSampler& sampler, const glm::vec3& p,
 // The pixel cones' gather (cone_gather): from the surface point, offset and plane height alike.
 Gather gather(LevelSampler& sampler, const SparseVoxelScene& v,
               const glm::vec3& pWorld, const glm::vec3& n, const glm::vec3& ng, float maxDist, float falloff,
-              float sky) {
+              float sky, std::vector<SparseLane>* lanes = nullptr) {
     const glm::vec3 p = glm::vec3(v.voxelFromWorld * glm::vec4(pWorld, 1.f));
     const float offset = sampler.mp->offset;
-    return gatherVoxel(sampler, p, n, ng, offset, offset, maxDist, falloff, sky);
+    return gatherVoxel(sampler, p, n, ng, offset, offset, maxDist, falloff, sky, lanes);
+}
+
+// sparseConeAO's march distance and falloff for `radius` (world units).
+void aoLimits(const SparseVoxelScene& voxels, float radius, const ConeSettings& settings, const char* what,
+              float& maxDist, float& falloff) {
+    if (!(radius >= 0.f) || !std::isfinite(radius))
+        throw InternalError(what, "radius " + std::to_string(radius) + " must be finite and >= 0");
+    maxDist = radius / voxels.voxelSize;
+    falloff = (settings.aoMapping == ConeAoMapping::Falloff && maxDist > 0.f) ? gpu::CONE_FALLOFF_LAMBDA_R / maxDist
+                                                                               : 0.f;
 }
 
 MarchParams marchParams(const SparseVoxelScene& v, const ConeSettings& s) {
@@ -303,13 +321,9 @@ std::vector<float> sparseConeAO(const SparseVoxelScene& voxels, const std::vecto
                                 float radius, const ConeSettings& settings, ConeCost* cost) {
     checkVoxels(voxels, "sparseConeAO");
     settings.validate();
-    if (!(radius >= 0.f) || !std::isfinite(radius))
-        throw InternalError("sparseConeAO", "radius " + std::to_string(radius) + " must be finite and >= 0");
+    float maxDist = 0.f, falloff = 0.f;
+    aoLimits(voxels, radius, settings, "sparseConeAO", maxDist, falloff);
     const MarchParams mp = marchParams(voxels, settings);
-    const float maxDist = radius / voxels.voxelSize;
-    const float falloff = (settings.aoMapping == ConeAoMapping::Falloff && maxDist > 0.f)
-                              ? gpu::CONE_FALLOFF_LAMBDA_R / maxDist
-                              : 0.f;
     std::vector<float> ao(points.size(), 1.f);
     std::vector<double> samples(points.size(), 0.0), fetches(points.size(), 0.0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
@@ -326,6 +340,21 @@ std::vector<float> sparseConeAO(const SparseVoxelScene& voxels, const std::vecto
     });
     sumCost(cost, samples, fetches);
     return ao;
+}
+
+std::vector<SparseLane> sparseConeAOLanes(const SparseVoxelScene& voxels, const SparsePoint& point, float radius,
+                                          const ConeSettings& settings) {
+    checkVoxels(voxels, "sparseConeAOLanes");
+    settings.validate();
+    float maxDist = 0.f, falloff = 0.f;
+    aoLimits(voxels, radius, settings, "sparseConeAOLanes", maxDist, falloff);
+    const MarchParams mp = marchParams(voxels, settings);
+    std::vector<SparseLane> lanes;
+    glm::vec3 n, ng;
+    if (!surface(point, n, ng)) return lanes;
+    LevelSampler sampler(voxels, mp, false);
+    gather(sampler, voxels, point.position, n, ng, maxDist, falloff, 0.f, &lanes);
+    return lanes;
 }
 
 std::vector<glm::vec3> sparseConeGI(const SparseVoxelScene& voxels, const std::vector<SparsePoint>& points,

@@ -34,6 +34,20 @@ struct SparsePoint {
 std::vector<float> sparseConeAO(const SparseVoxelScene& voxels, const std::vector<SparsePoint>& points,
                                 float radius, const ConeSettings& settings, ConeCost* cost = nullptr);
 
+// One lane of one point's AO gather, as sparseConeAO marches it.
+struct SparseLane {
+    int cone = 0;               // the cone of the set it belongs to
+    glm::vec3 direction{0.f};   // its ray from the surface point (world space; before vct.aim)
+    glm::vec3 tangent{0.f};     // the same in the tangent frame of the shading normal (z = normal)
+    float weight = 0.f;         // its share of the cosine-weighted hemisphere (the lanes sum to 1)
+    float alpha = 0.f;          // the occlusion it composited: 1 closed by the surface's plane, 0 left open
+};
+
+// The lanes of `point`'s AO gather, in the set's order: 1 - sum_l weight_l alpha_l is the point's
+// sparseConeAO. Empty for a point without a usable surface (sky).
+std::vector<SparseLane> sparseConeAOLanes(const SparseVoxelScene& voxels, const SparsePoint& point, float radius,
+                                          const ConeSettings& settings);
+
 // Indirect diffuse radiance per point (coneTraceGI): albedo * sum_c w_c (L_c + (1 - alpha_c) sky),
 // cones run until they leave the grid. Requires injected radiance. Invalid points give 0.
 std::vector<glm::vec3> sparseConeGI(const SparseVoxelScene& voxels, const std::vector<SparsePoint>& points,

@@ -210,3 +210,27 @@ TEST(AnalyticAo, GiCasesGatherTheClosedFormsOfTheirEmitters) {
     }
     EXPECT_EQ(checked, 4) << "a case the closed forms name is missing";
 }
+
+// firstHit is the nearest occluder along the ray, in closed form: a rectangle, a disc and a
+// sphere on one axis, each hit where the plane or the sphere says, the nearest winning, none
+// past tMax or behind the origin.
+TEST(AnalyticAo, FirstHitIsTheNearestOccluderAlongTheRay) {
+    AnalyticOccluders occ;
+    occ.rects.push_back({glm::vec3(0.f, 3.f, 0.f), glm::vec3(1.f, 0.f, 0.f), glm::vec3(0.f, 0.f, 1.f)});
+    occ.discs.push_back({glm::vec3(0.f, 2.f, 0.f), glm::vec3(0.f, 1.f, 0.f), 0.5f});
+    occ.spheres.push_back({glm::vec3(0.f, 5.f, 0.f), 1.f});
+    const glm::vec3 up(0.f, 1.f, 0.f);
+    EXPECT_FLOAT_EQ(occ.firstHit(glm::vec3(0.f), up, 10.f), 2.f);                   // the disc
+    EXPECT_FLOAT_EQ(occ.firstHit(glm::vec3(0.7f, 0.f, 0.f), up, 10.f), 3.f);        // past the disc's rim: the rect
+    EXPECT_FLOAT_EQ(occ.firstHit(glm::vec3(0.f, 3.5f, 0.f), up, 10.f), 0.5f);       // above both: the sphere at y 4
+    EXPECT_FLOAT_EQ(occ.firstHit(glm::vec3(0.f, 5.f, 0.f), up, 10.f), 1.f);         // inside the sphere: its far side
+    EXPECT_TRUE(std::isinf(occ.firstHit(glm::vec3(0.f), up, 1.9f)));                // all beyond tMax
+    EXPECT_TRUE(std::isinf(occ.firstHit(glm::vec3(0.f), -up, 10.f)));               // all behind
+    EXPECT_TRUE(std::isinf(occ.firstHit(glm::vec3(1.5f, 0.f, 0.f), up, 10.f)));     // beside all three
+    // A slanted ray meets the rect's plane at 3 / cos.
+    const glm::vec3 d = glm::normalize(glm::vec3(0.9f, 3.f, 0.f));  // x 0.6 at the disc: past its rim
+    EXPECT_NEAR(occ.firstHit(glm::vec3(0.f), d, 10.f), 3.f / d.y, 1e-5f);
+    // occludes agrees with it.
+    EXPECT_TRUE(occ.occludes(glm::vec3(0.f), up, 2.f));
+    EXPECT_FALSE(occ.occludes(glm::vec3(0.f), up, 1.99f));
+}

@@ -3,6 +3,7 @@
 // the grid on a cubic grid (vct.lanes=0, vct.grid=cube) against the default march, dense and
 // sparse. The finer grids and the full tables are bench_convergence's (docs/convergence.md).
 #include "common/tangent_frame.h"
+#include "core/errors.h"
 #include "cone/cone_set.h"
 #include "eval/convergence.h"
 #include "scene/scene_builder.h"
@@ -294,4 +295,51 @@ TEST(VctConvergence, SparseGiMatchesTheDenseGi) {
             // The emitters are seen: every case gathers light somewhere.
             EXPECT_GT(*std::max_element(dense.begin(), dense.end()), 0.05) << c.name;
         }
+}
+
+// The lane trace (vctAoLanesAt, bench_convergence --lanes) is the march the method ran: its
+// lanes' weights make the hemisphere, 1 - sum w alpha is the AO the method returned at that
+// point, and each lane is scored against its own geometry: under a plate of side 2 R at 0.5 R
+// its ray meets the plate's plane at 0.5 R / d.y where that lies on the plate (closed form), and
+// its own cone is partly occluded exactly when its ray says so, in part (the quadrature, an
+// independent path: a lane whose ray meets the plate within 0.75 R is mostly occluded, one
+// whose ray misses it is not wholly occluded).
+TEST(VctConvergence, LaneTraceAddsUpToTheMarchAndScoresEachLane) {
+    const ParamMap p = params({"vct.lanes=0", "vct.grid=cube", "vct.sharpen=4", "vct.aim=1"});
+    const std::vector<AoConvergenceCase> cases = aoConvergenceCases();
+    const auto it = std::find_if(cases.begin(), cases.end(),
+                                 [](const AoConvergenceCase& c) { return c.name == "plate h=0.5R a=2R off"; });
+    ASSERT_NE(it, cases.end());
+    const AoConvergenceCase& c = *it;
+    const std::vector<double> vct = vctAoAt(c, 64, "vdb", p);
+    for (size_t i : {size_t(6), size_t(12), size_t(14)}) {  // under the plate, its centre, R/2 past its edge
+        const AoLaneTrace t = vctAoLanesAt(c, 64, p, i);
+        ASSERT_EQ(t.lanes.size(), 6u * 4u) << "6 cones in (64 / 32)^2 lanes";
+        double weight = 0.0, ao = 1.0;
+        int hit = 0, missed = 0;
+        for (const AoLaneRecord& r : t.lanes) {
+            weight += r.lane.weight;
+            ao -= r.lane.weight * r.lane.alpha;
+            EXPECT_GE(r.exactOcclusion, 0.0);
+            EXPECT_LE(r.exactOcclusion, 1.0);
+            const glm::vec3 d = r.lane.direction, q = c.points[i];
+            const float t = d.y > 0.f ? 0.5f / d.y : INFINITY;
+            const glm::vec3 at = q + t * d;
+            const bool onPlate = std::isfinite(t) && t <= 4.f && std::abs(at.x) <= 1.f && std::abs(at.z) <= 1.f;
+            if (onPlate) {
+                EXPECT_NEAR(r.rayHit, t, 1e-4f) << "point " << i;
+                if (t < 0.75f) EXPECT_GT(r.exactOcclusion, 0.5) << "point " << i;
+                ++hit;
+            } else {
+                EXPECT_TRUE(std::isinf(r.rayHit)) << "point " << i;
+                EXPECT_LT(r.exactOcclusion, 1.0) << "point " << i;
+                ++missed;
+            }
+        }
+        EXPECT_NEAR(weight, 1.0, 1e-4);
+        EXPECT_NEAR(ao, vct[i], 1e-5) << "point " << i;
+        EXPECT_GT(hit, 0) << "point " << i;
+        EXPECT_GT(missed, 0) << "point " << i;
+    }
+    EXPECT_THROW(vctAoLanesAt(c, 32, p, c.points.size()), UsageError);
 }
