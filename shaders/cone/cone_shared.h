@@ -37,8 +37,12 @@ VCT_CONST int CONE_BLOCK_CONES = 512;
 VCT_CONST int CONE_LOOP_BUDGET = SHADER_LOOP_BUDGET;
 // vct.lanes = auto: one lane per cone at 32^3, (res / 32)^2 lanes above, so a lane's
 // footprint at R spans the same number of voxels at every resolution (4.6 voxels for a
-// 60-degree cone at R = 4 voxels, i.e. R = 1/8 of a 32^3 grid).
+// 60-degree cone at R = 4 voxels, i.e. R = 1/8 of a 32^3 grid). vct.lanes-base moves the
+// resolution of one lane per cone: 16 gives four times the lanes, each half as wide, whose
+// footprint at a given distance spans half the voxels.
 VCT_CONST int CONE_LANES_BASE_RES = 32;
+VCT_CONST int CONE_LANES_BASE_MIN = 4;
+VCT_CONST int CONE_LANES_BASE_MAX = 1024;
 // Safety bound on samples per cone (apertures near 1 degree step one half voxel at a time):
 // 1024 half-voxel steps cross a 512^3 grid's diagonal.
 VCT_CONST int CONE_MAX_STEPS = 1024;

@@ -16,7 +16,7 @@ nlohmann::json coneCostJson(const ConeCost& c, const ConeSettings& s, int voxelR
             {"traced_pixels", c.tracedPixels},
             {"trace_scale", s.traceScale},
             {"dispatches", c.dispatches},
-            {"cones_marched", s.coneCount * resolveConeLanes(s.lanes, s.coneCount, voxelRes)}};
+            {"cones_marched", s.coneCount * resolveConeLanes(s.lanes, s.coneCount, voxelRes, s.lanesBase)}};
 }
 
 }  // namespace vct

@@ -84,9 +84,9 @@ ConeLanes coneLanes(const std::vector<glm::vec4>& set, float apertureDeg, int la
     return out;
 }
 
-int resolveConeLanes(int lanes, int coneCount, int maxResolution) {
+int resolveConeLanes(int lanes, int coneCount, int maxResolution, int baseResolution) {
     if (lanes > 0) return lanes;
-    const double ratio = double(maxResolution) / double(gpu::CONE_LANES_BASE_RES);
+    const double ratio = double(maxResolution) / double(std::max(1, baseResolution));
     const int maxLanes = std::max(1, gpu::CONE_MAX_CONES / std::max(1, coneCount));
     return std::clamp(int(std::lround(ratio * ratio)), 1, maxLanes);
 }

@@ -45,9 +45,11 @@ struct ConeLanes {
 };
 ConeLanes coneLanes(const std::vector<glm::vec4>& set, float apertureDeg, int lanes);
 
-// vct.lanes = 0 (auto): (maxResolution / CONE_LANES_BASE_RES)^2 lanes, rounded, clamped to
+// vct.lanes = 0 (auto): (maxResolution / baseResolution)^2 lanes, rounded, clamped to
 // [1, CONE_MAX_CONES / coneCount]: a lane's footprint at a given distance stays the same
-// number of voxels as the grid refines. Otherwise `lanes` itself.
-int resolveConeLanes(int lanes, int coneCount, int maxResolution);
+// number of voxels as the grid refines. Otherwise `lanes` itself. `baseResolution`
+// (vct.lanes-base, CONE_LANES_BASE_RES by default) is the resolution at which auto marches
+// each cone whole.
+int resolveConeLanes(int lanes, int coneCount, int maxResolution, int baseResolution);
 
 }  // namespace vct

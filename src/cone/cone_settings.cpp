@@ -39,6 +39,9 @@ void ConeSettings::validate() const {
     require(lanes >= 0 && lanes * coneCount <= gpu::CONE_MAX_CONES,
             "lanes " + std::to_string(lanes) + " x " + std::to_string(coneCount) + " cones outside [0, " +
                 std::to_string(gpu::CONE_MAX_CONES) + "]");
+    require(lanesBase >= gpu::CONE_LANES_BASE_MIN && lanesBase <= gpu::CONE_LANES_BASE_MAX,
+            "lanesBase " + std::to_string(lanesBase) + " outside [" + std::to_string(gpu::CONE_LANES_BASE_MIN) + ", " +
+                std::to_string(gpu::CONE_LANES_BASE_MAX) + "]");
     require(std::isfinite(sharpen) && sharpen >= 1.f && sharpen <= gpu::CONE_SHARPEN_MAX,
             "sharpen " + std::to_string(sharpen) + " outside [1, " + std::to_string(gpu::CONE_SHARPEN_MAX) + "]");
     require(dispatchCones >= 0 && dispatchCones <= gpu::CONE_MAX_CONES,
@@ -47,7 +50,7 @@ void ConeSettings::validate() const {
 }
 
 ConeLanes coneMarchLanes(const ConeSettings& s, int maxResolution) {
-    return coneLanes(diffuseConeSet(s.coneCount), s.apertureDeg, resolveConeLanes(s.lanes, s.coneCount, maxResolution));
+    return coneLanes(diffuseConeSet(s.coneCount), s.apertureDeg, resolveConeLanes(s.lanes, s.coneCount, maxResolution, s.lanesBase));
 }
 
 const SettingsTable<ConeSettings>& coneSettings() {
@@ -84,6 +87,12 @@ const SettingsTable<ConeSettings>& coneSettings() {
                      "and solid angle shared); 0 = auto, (voxel res / 32)^2, so a lane's footprint stays the same "
                      "number of voxels as the grid refines and the march converges to the cone's exact visibility "
                      "(cost grows with the lanes)")
+            .integer("vct.lanes-base", &ConeSettings::lanesBase, gpu::CONE_LANES_BASE_MIN, gpu::CONE_LANES_BASE_MAX,
+                     "with vct.lanes=0: the resolution at which a cone is marched whole; auto gives (voxel res / "
+                     "this)^2 lanes per cone. 32 keeps a 6-cone lane's footprint at R about 4.6 voxels; 16 marches "
+                     "four times the lanes, their footprint half the voxels: on the closed-form families (6 cones on "
+                     "a cube, vct.sharpen=4, vct.aim=1) the mean voxel error at 256^3 0.018 -> 0.016 and the small "
+                     "closed room's leak 0.046 -> 0.016, at four times the cone pass's cost")
             .flag("vct.jitter", &ConeSettings::jitter,
                   "turn the cone set about the normal by an angle per pixel drawn from the seed: the fixed set's "
                   "streaks become noise (a new pattern per seed, so per frame with per-frame seeds); 0 keeps one "
@@ -129,6 +138,11 @@ const SettingsTable<ConeSettings>& coneSettings() {
                 if (s.sharpen > 1.f && !s.anisotropic)
                     throw UsageError("--param vct.sharpen=" + std::to_string(s.sharpen) +
                                      ": it filters the directional levels; it needs vct.aniso=1");
+            })
+            .check([](const ConeSettings& s) {
+                if (s.lanesBase != gpu::CONE_LANES_BASE_RES && s.lanes != 0)
+                    throw UsageError("--param vct.lanes-base=" + std::to_string(s.lanesBase) +
+                                     ": it sets how many lanes auto marches; it needs vct.lanes=0");
             })
             .check([](const ConeSettings& s) {
                 if (s.lanes * s.coneCount > gpu::CONE_MAX_CONES)

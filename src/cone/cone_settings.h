@@ -37,7 +37,8 @@ struct ConeSettings {
     bool anisotropic = true;        // use grid.anisoRadiance when present
     ConeAoMapping aoMapping = ConeAoMapping::Linear;
     bool planeLimit = true;         // limit the footprint by the height above the tangent plane
-    int lanes = 1;                  // lanes per cone (cone/cone_set.h); 0 = auto, (res / 32)^2
+    int lanes = 1;                  // lanes per cone (cone/cone_set.h); 0 = auto, (res / lanesBase)^2
+    int lanesBase = gpu::CONE_LANES_BASE_RES;  // vct.lanes-base: auto's resolution of one lane per cone
     bool jitter = false;            // turn the set about the normal per pixel (cone_jitterAngle)
     ConeOpacity opacity = ConeOpacity::Alpha;  // vct.opacity: the directional levels' encoding
     int traceScale = 1;             // vct.trace-scale: cones traced for one pixel per s x s block, resolved

@@ -152,6 +152,13 @@ TEST(RenderCli, ExplainPrintsRunAndSkippedPasses) {
                         "--explain -o " + dir + "/a.png");
     ASSERT_EQ(aimed.exitCode, 0) << aimed.output;
     EXPECT_NE(aimed.output.find("rays' points at the maximum distance (vct.aim)"), std::string::npos) << aimed.output;
+    // ... and how many lanes auto marches when its base resolution moves: (32 / 16)^2 at 32^3.
+    auto based = runVct("render scenes/cornell_box.gltf --size 16 --ao vct --voxel-res 32 --param vct.lanes=0 "
+                        "--param vct.lanes-base=16 --explain -o " + dir + "/l.png");
+    ASSERT_EQ(based.exitCode, 0) << based.output;
+    EXPECT_NE(based.output.find("each marched as 4 lanes (vct.lanes=auto at 32^3 with vct.lanes-base=16)"),
+              std::string::npos)
+        << based.output;
 }
 
 TEST(RenderCli, BadInputFailsCleanlyWithoutOutput) {
@@ -177,6 +184,9 @@ TEST(RenderCli, BadInputFailsCleanlyWithoutOutput) {
          "vct.sharpen"},
         {"render scenes/cornell_box.gltf --ao vct --param vct.grid-shift=0.5 --param vct.clipmap.levels=3 -o " + out,
          2, "vct.grid-shift"},
+        {"render scenes/cornell_box.gltf --ao vct --param vct.lanes-base=16 -o " + out, 2, "needs vct.lanes=0"},
+        {"render scenes/cornell_box.gltf --ao vct --param vct.lanes=0 --param vct.lanes-base=2 -o " + out, 2,
+         "vct.lanes-base"},
         {"render scenes/cornell_box.gltf --ao vct --param vct.grid-shift=1.5 -o " + out, 2, "vct.grid-shift"},
         {"render scenes/cornell_box.gltf --aov bogus -o " + out, 2, "bogus"},
         {"render scenes/cornell_box.gltf -o " + dir + "/x.tiff", 2, "x.tiff"},

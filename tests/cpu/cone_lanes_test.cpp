@@ -99,14 +99,21 @@ TEST(ConeLanes, RefiningLanesConvergesToTheConeModel) {
 }
 
 TEST(ConeLanes, AutoKeepsALanesFootprintInVoxelsAsTheGridRefines) {
-    EXPECT_EQ(resolveConeLanes(0, 6, 32), 1);
-    EXPECT_EQ(resolveConeLanes(0, 6, 64), 4);
-    EXPECT_EQ(resolveConeLanes(0, 6, 128), 16);
-    EXPECT_EQ(resolveConeLanes(0, 6, 256), 64);
-    EXPECT_EQ(resolveConeLanes(0, 6, 1024), gpu::CONE_MAX_CONES / 6) << "clamped to CONE_MAX_CONES";
-    EXPECT_EQ(resolveConeLanes(0, 64, 256), gpu::CONE_MAX_CONES / 64);
-    EXPECT_EQ(resolveConeLanes(0, 6, 16), 1);
-    EXPECT_EQ(resolveConeLanes(5, 6, 256), 5) << "an explicit count stays";
+    EXPECT_EQ(resolveConeLanes(0, 6, 32, gpu::CONE_LANES_BASE_RES), 1);
+    EXPECT_EQ(resolveConeLanes(0, 6, 64, gpu::CONE_LANES_BASE_RES), 4);
+    EXPECT_EQ(resolveConeLanes(0, 6, 128, gpu::CONE_LANES_BASE_RES), 16);
+    EXPECT_EQ(resolveConeLanes(0, 6, 256, gpu::CONE_LANES_BASE_RES), 64);
+    EXPECT_EQ(resolveConeLanes(0, 6, 1024, gpu::CONE_LANES_BASE_RES), gpu::CONE_MAX_CONES / 6) << "clamped to CONE_MAX_CONES";
+    EXPECT_EQ(resolveConeLanes(0, 64, 256, gpu::CONE_LANES_BASE_RES), gpu::CONE_MAX_CONES / 64);
+    EXPECT_EQ(resolveConeLanes(0, 6, 16, gpu::CONE_LANES_BASE_RES), 1);
+    EXPECT_EQ(resolveConeLanes(5, 6, 256, gpu::CONE_LANES_BASE_RES), 5) << "an explicit count stays";
+    // vct.lanes-base: one lane per cone at that resolution, (res / base)^2 above.
+    EXPECT_EQ(resolveConeLanes(0, 6, 16, 16), 1);
+    EXPECT_EQ(resolveConeLanes(0, 6, 32, 16), 4);
+    EXPECT_EQ(resolveConeLanes(0, 6, 256, 16), 256) << "four times base 32's 64";
+    EXPECT_EQ(resolveConeLanes(0, 6, 256, 64), 16);
+    EXPECT_EQ(resolveConeLanes(0, 6, 512, 16), gpu::CONE_MAX_CONES / 6) << "clamped to CONE_MAX_CONES";
+    EXPECT_EQ(resolveConeLanes(7, 6, 256, 16), 7) << "an explicit count stays";
     // Half the lane's aperture per doubling: tan(half) * resolution stays within ~2%.
     const std::vector<glm::vec4> set = diffuseConeSet(6);
     const double at128 = std::tan(0.5 * coneLanes(set, 60.f, 16).apertureDeg * M_PI / 180.0) * 128.0;
