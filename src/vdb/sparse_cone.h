@@ -3,9 +3,10 @@
 // (shaders/cone/cone_march_shared.h, compiled as C++), with the GL sampling reproduced on the
 // VDB trees: trilinear within a level (tools::BoxSampler at the GL texel centres of that
 // level, zero outside the occupied set) and linear between the two levels around the
-// fractional level (quadrilinear), the level clamped to [0, levels - 1]. Isotropic levels only: the
-// ConeSettings::anisotropic flag is ignored (the GPU path must run with vct.aniso=0 to compute
-// the same thing). TBB over points; the result does not depend on the thread count.
+// fractional level (quadrilinear), the level clamped to [0, levels - 1]. When the voxels were
+// built with directional levels (SparseBuildOptions::anisotropic, as the dense grid's
+// vct.aniso=1) a sample reads them as cone_march.glsl does, sharpened with vct.sharpen; else the
+// isotropic levels. TBB over points; the result does not depend on the thread count.
 #pragma once
 
 #include "cone/cone_bounce.h"
