@@ -27,15 +27,14 @@
 
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <iterator>
-#include <string>
 #include <exception>
 #include <iomanip>
+#include <iterator>
 #include <sstream>
+#include <string>
 
 using namespace vct;
 

@@ -50,7 +50,8 @@ void ConeSettings::validate() const {
 }
 
 ConeLanes coneMarchLanes(const ConeSettings& s, int maxResolution) {
-    return coneLanes(diffuseConeSet(s.coneCount), s.apertureDeg, resolveConeLanes(s.lanes, s.coneCount, maxResolution, s.lanesBase));
+    return coneLanes(diffuseConeSet(s.coneCount), s.apertureDeg,
+                     resolveConeLanes(s.lanes, s.coneCount, maxResolution, s.lanesBase));
 }
 
 const SettingsTable<ConeSettings>& coneSettings() {
@@ -84,15 +85,15 @@ const SettingsTable<ConeSettings>& coneSettings() {
                   "voxels never occlude it")
             .integer("vct.lanes", &ConeSettings::lanes, 0, gpu::CONE_MAX_CONES,
                      "lanes per cone: each cone marched as this many narrower cones spread over its cap (its weight "
-                     "and solid angle shared); 0 = auto, (voxel res / 32)^2, so a lane's footprint stays the same "
-                     "number of voxels as the grid refines and the march converges to the cone's exact visibility "
-                     "(cost grows with the lanes)")
+                     "and solid angle shared); 0 = auto, (voxel res / vct.lanes-base)^2, so a lane's footprint stays "
+                     "the same number of voxels as the grid refines and the march converges to the cone's exact "
+                     "visibility (cost grows with the lanes)")
             .integer("vct.lanes-base", &ConeSettings::lanesBase, gpu::CONE_LANES_BASE_MIN, gpu::CONE_LANES_BASE_MAX,
                      "with vct.lanes=0: the resolution at which a cone is marched whole; auto gives (voxel res / "
                      "this)^2 lanes per cone. 32 keeps a 6-cone lane's footprint at R about 4.6 voxels; 16 marches "
                      "four times the lanes, their footprint half the voxels: on the closed-form families (6 cones on "
                      "a cube, vct.sharpen=4, vct.aim=1) the mean voxel error at 256^3 0.018 -> 0.016 and the small "
-                     "closed room's leak 0.046 -> 0.016, at four times the cone pass's cost")
+                     "closed room's leak 0.046 -> 0.016, at about 4.8 times the cone pass's samples (128^3, sparse)")
             .flag("vct.jitter", &ConeSettings::jitter,
                   "turn the cone set about the normal by an angle per pixel drawn from the seed: the fixed set's "
                   "streaks become noise (a new pattern per seed, so per frame with per-frame seeds); 0 keeps one "

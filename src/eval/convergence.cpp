@@ -334,12 +334,10 @@ AoLaneTrace vctAoLanesAt(const AoConvergenceCase& c, int voxelRes, const ParamMa
     trace.radius = c.radius;
     vctAt(c, voxelRes, "vdb", params, false, [&](MethodContext& ctx) {
         const SparseFrame& f = renderedSparseFrame(ctx);
-        const SparseVoxelScene& v = *f.voxels;
-        trace.voxelSize = v.voxelSize;
-        trace.laneApertureDeg = coneMarchLanes(cone, std::max(v.resolution.x, std::max(v.resolution.y, v.resolution.z)))
-                                    .apertureDeg;
-        for (const SparseLane& lane : sparseConeAOLanes(v, f.points[point], c.radius, cone))
-            trace.lanes.push_back({lane, 0.0, 0.f});
+        trace.voxelSize = f.voxels->voxelSize;
+        const SparseLanes marched = sparseConeAOLanes(*f.voxels, f.points[point], c.radius, cone);
+        trace.laneApertureDeg = marched.apertureDeg;
+        for (const SparseLane& lane : marched.lanes) trace.lanes.push_back({lane, 0.0, 0.f});
     });
     const glm::vec3 p = c.points[point], n = c.shadingNormal;
     for (AoLaneRecord& r : trace.lanes) {

@@ -67,14 +67,16 @@ std::string coneExplanation(const RenderRequest& r) {
     const ConeSettings c = readConeSettings(r.params);
     std::string s = std::to_string(c.coneCount) + " cones of " + std::to_string(int(std::lround(c.apertureDeg))) + " deg";
     const int lanes = resolveConeLanes(c.lanes, c.coneCount, r.voxelRes, c.lanesBase);
-    if (lanes > 1)
-        s += ", each marched as " + std::to_string(lanes) + " lanes" +
-             (c.lanes == 0 ? " (vct.lanes=auto at " + std::to_string(r.voxelRes) + "^3" +
-                                 (c.lanesBase != gpu::CONE_LANES_BASE_RES
-                                      ? " with vct.lanes-base=" + std::to_string(c.lanesBase)
-                                      : std::string()) +
-                                 ")"
-                           : " (vct.lanes)");
+    if (lanes > 1) {
+        s += ", each marched as " + std::to_string(lanes) + " lanes";
+        if (c.lanes > 0) {
+            s += " (vct.lanes)";
+        } else {
+            s += " (vct.lanes=auto at " + std::to_string(r.voxelRes) + "^3";
+            if (c.lanesBase != gpu::CONE_LANES_BASE_RES) s += " with vct.lanes-base=" + std::to_string(c.lanesBase);
+            s += ")";
+        }
+    }
     if (c.jitter) s += ", turned about the normal per pixel (vct.jitter, from the seed)";
     if (sharpensLevels(c)) {
         std::ostringstream sharpen;

@@ -38,6 +38,7 @@ struct MarchParams {
     std::vector<glm::vec4> cones;       // the set's lanes (coneMarchLanes)
     std::vector<glm::vec4> axes;        // the set's cones (ConeLanes::axes)
     int lanesPerCone = 1;
+    float laneApertureDeg = 0.f;        // each lane's full aperture (ConeLanes::apertureDeg)
     float sharpen = 1.f;                // vct.sharpen when the levels are directional, else 1
     bool aim = false;                   // vct.aim (gpu::cone_aimedDirection)
 };
@@ -270,22 +271,13 @@ Gather gather(LevelSampler& sampler, const SparseVoxelScene& v,
     return gatherVoxel(sampler, p, n, ng, offset, offset, maxDist, falloff, sky, lanes);
 }
 
-// sparseConeAO's march distance and falloff for `radius` (world units).
-void aoLimits(const SparseVoxelScene& voxels, float radius, const ConeSettings& settings, const char* what,
-              float& maxDist, float& falloff) {
-    if (!(radius >= 0.f) || !std::isfinite(radius))
-        throw InternalError(what, "radius " + std::to_string(radius) + " must be finite and >= 0");
-    maxDist = radius / voxels.voxelSize;
-    falloff = (settings.aoMapping == ConeAoMapping::Falloff && maxDist > 0.f) ? gpu::CONE_FALLOFF_LAMBDA_R / maxDist
-                                                                               : 0.f;
-}
-
 MarchParams marchParams(const SparseVoxelScene& v, const ConeSettings& s) {
     MarchParams mp;
     const ConeLanes lanes = coneMarchLanes(s, std::max(v.resolution.x, std::max(v.resolution.y, v.resolution.z)));
     mp.cones = lanes.cones;
     mp.axes = lanes.axes;
     mp.lanesPerCone = lanes.lanesPerCone;
+    mp.laneApertureDeg = lanes.apertureDeg;
     mp.march.tanHalfAperture = std::tan(0.5f * lanes.apertureDeg * float(M_PI) / 180.f);
     mp.march.stepFactor = s.stepFactor;
     mp.march.maxAlpha = s.maxAlpha;
@@ -308,6 +300,27 @@ void checkVoxels(const SparseVoxelScene& v, const char* what) {
         throw InternalError(what, "the sparse voxels have no levels (buildSparseLevels)");
 }
 
+// An AO gather's march over checked voxels: its parameters, the distance R in voxels and the
+// falloff (sparseConeAO and its lane by lane twin share it).
+struct AoMarch {
+    MarchParams mp;
+    float maxDist = 0.f, falloff = 0.f;
+};
+
+AoMarch aoMarch(const SparseVoxelScene& voxels, float radius, const ConeSettings& settings, const char* what) {
+    checkVoxels(voxels, what);
+    settings.validate();
+    if (!(radius >= 0.f) || !std::isfinite(radius))
+        throw InternalError(what, "radius " + std::to_string(radius) + " must be finite and >= 0");
+    AoMarch m;
+    m.mp = marchParams(voxels, settings);
+    m.maxDist = radius / voxels.voxelSize;
+    m.falloff = (settings.aoMapping == ConeAoMapping::Falloff && m.maxDist > 0.f)
+                    ? gpu::CONE_FALLOFF_LAMBDA_R / m.maxDist
+                    : 0.f;
+    return m;
+}
+
 }  // namespace
 
 // Sums the per-point counts into `cost` (serially: the sum does not depend on the threads).
@@ -319,20 +332,16 @@ void sumCost(ConeCost* cost, const std::vector<double>& samples, const std::vect
 
 std::vector<float> sparseConeAO(const SparseVoxelScene& voxels, const std::vector<SparsePoint>& points,
                                 float radius, const ConeSettings& settings, ConeCost* cost) {
-    checkVoxels(voxels, "sparseConeAO");
-    settings.validate();
-    float maxDist = 0.f, falloff = 0.f;
-    aoLimits(voxels, radius, settings, "sparseConeAO", maxDist, falloff);
-    const MarchParams mp = marchParams(voxels, settings);
+    const AoMarch m = aoMarch(voxels, radius, settings, "sparseConeAO");
     std::vector<float> ao(points.size(), 1.f);
     std::vector<double> samples(points.size(), 0.0), fetches(points.size(), 0.0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
-        LevelSampler sampler(voxels, mp, false);
+        LevelSampler sampler(voxels, m.mp, false);
         for (size_t i = r.begin(); i != r.end(); ++i) {
             glm::vec3 n, ng;
             if (!surface(points[i], n, ng)) continue;
             const double before = sampler.fetches;
-            const Gather g = gather(sampler, voxels, points[i].position, n, ng, maxDist, falloff, 0.f);
+            const Gather g = gather(sampler, voxels, points[i].position, n, ng, m.maxDist, m.falloff, 0.f);
             ao[i] = std::clamp(1.f - g.occlusion, 0.f, 1.f);
             samples[i] = g.samples;
             fetches[i] = sampler.fetches - before;
@@ -342,19 +351,16 @@ std::vector<float> sparseConeAO(const SparseVoxelScene& voxels, const std::vecto
     return ao;
 }
 
-std::vector<SparseLane> sparseConeAOLanes(const SparseVoxelScene& voxels, const SparsePoint& point, float radius,
-                                          const ConeSettings& settings) {
-    checkVoxels(voxels, "sparseConeAOLanes");
-    settings.validate();
-    float maxDist = 0.f, falloff = 0.f;
-    aoLimits(voxels, radius, settings, "sparseConeAOLanes", maxDist, falloff);
-    const MarchParams mp = marchParams(voxels, settings);
-    std::vector<SparseLane> lanes;
+SparseLanes sparseConeAOLanes(const SparseVoxelScene& voxels, const SparsePoint& point, float radius,
+                              const ConeSettings& settings) {
+    const AoMarch m = aoMarch(voxels, radius, settings, "sparseConeAOLanes");
+    SparseLanes out;
+    out.apertureDeg = m.mp.laneApertureDeg;
     glm::vec3 n, ng;
-    if (!surface(point, n, ng)) return lanes;
-    LevelSampler sampler(voxels, mp, false);
-    gather(sampler, voxels, point.position, n, ng, maxDist, falloff, 0.f, &lanes);
-    return lanes;
+    if (!surface(point, n, ng)) return out;
+    LevelSampler sampler(voxels, m.mp, false);
+    gather(sampler, voxels, point.position, n, ng, m.maxDist, m.falloff, 0.f, &out.lanes);
+    return out;
 }
 
 std::vector<glm::vec3> sparseConeGI(const SparseVoxelScene& voxels, const std::vector<SparsePoint>& points,

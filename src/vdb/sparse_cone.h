@@ -45,9 +45,13 @@ struct SparseLane {
 };
 
 // The lanes of `point`'s AO gather, in the set's order: 1 - sum_l weight_l alpha_l is the point's
-// sparseConeAO. Empty for a point without a usable surface (sky).
-std::vector<SparseLane> sparseConeAOLanes(const SparseVoxelScene& voxels, const SparsePoint& point, float radius,
-                                          const ConeSettings& settings);
+// sparseConeAO. No lanes for a point without a usable surface (sky).
+struct SparseLanes {
+    float apertureDeg = 0.f;  // each lane's full aperture, as the march chose it for these voxels
+    std::vector<SparseLane> lanes;
+};
+SparseLanes sparseConeAOLanes(const SparseVoxelScene& voxels, const SparsePoint& point, float radius,
+                              const ConeSettings& settings);
 
 // Indirect diffuse radiance per point (coneTraceGI): albedo * sum_c w_c (L_c + (1 - alpha_c) sky),
 // cones run until they leave the grid. Requires injected radiance. Invalid points give 0.

@@ -301,9 +301,9 @@ TEST(VctConvergence, SparseGiMatchesTheDenseGi) {
 // lanes' weights make the hemisphere, 1 - sum w alpha is the AO the method returned at that
 // point, and each lane is scored against its own geometry: under a plate of side 2 R at 0.5 R
 // its ray meets the plate's plane at 0.5 R / d.y where that lies on the plate (closed form), and
-// its own cone is partly occluded exactly when its ray says so, in part (the quadrature, an
-// independent path: a lane whose ray meets the plate within 0.75 R is mostly occluded, one
-// whose ray misses it is not wholly occluded).
+// the quadrature of its own cone, an independent path, agrees with its ray: a lane whose ray
+// meets the plate within 0.75 R is mostly occluded, one whose ray misses it is not wholly
+// occluded.
 TEST(VctConvergence, LaneTraceAddsUpToTheMarchAndScoresEachLane) {
     const ParamMap p = params({"vct.lanes=0", "vct.grid=cube", "vct.sharpen=4", "vct.aim=1"});
     const std::vector<AoConvergenceCase> cases = aoConvergenceCases();
