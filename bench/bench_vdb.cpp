@@ -8,6 +8,7 @@
 // The scene is looked up in $VCT_SHARED_SCENES, else VCT_SOURCE_DIR "/../shared/scenes"; the
 // benchmark prints a note and exits 0 when it is missing. VCT_VDB_RES=64,128 picks resolutions.
 #include "bench_main.h"
+#include "core/memory_usage.h"
 #include "reference/embree_scene.h"
 #include "reference/reference_ao.h"
 #include "core/view.h"
@@ -78,9 +79,9 @@ static int benchRun(int, char**) {
     std::printf("Sponza: %zu triangles, %zu lights, %zu/%zu pixels hit; reference AO 64 spp in %.2f s (mean "
                 "stderr %.4f)\n",
                 scene.triangleCount(), scene.lights.size(), valid, surface.size(), since(t0), ref.meanStderr);
-    std::printf("%5s %15s %10s %8s %8s %8s %10s %10s %10s %7s %7s %9s %8s %8s\n", "res", "grid", "active",
-                "vox s", "inj s", "lvl s", "sparseMiB", "denseMiB", "cubeMiB", "%dense", "%cube", "AO 256 s",
-                "AO RMSE", "AO bias");
+    std::printf("%5s %15s %10s %8s %8s %8s %10s %10s %10s %7s %7s %9s %9s %8s %8s\n", "res", "grid", "active",
+                "vox s", "inj s", "lvl s", "sparseMiB", "denseMiB", "cubeMiB", "%dense", "%cube", "peakMiB",
+                "AO 256 s", "AO RMSE", "AO bias");
     ConeSettings cs;
     cs.anisotropic = false;
     ParamMap params;
@@ -101,16 +102,17 @@ static int benchRun(int, char**) {
         }
         char grid[32];
         std::snprintf(grid, sizeof grid, "%dx%dx%d", v.resolution.x, v.resolution.y, v.resolution.z);
-        std::printf("%5d %15s %10zu %8.2f %8.2f %8.2f %10.1f %10.1f %10.1f %6.1f%% %6.1f%% %9.3f %8.4f %+8.4f\n", res,
-                    grid, s.activeVoxels, s.voxelizeSeconds, s.injectSeconds, s.levelsSeconds, mib(s.memoryBytes),
+        std::printf("%5d %15s %10zu %8.2f %8.2f %8.2f %10.1f %10.1f %10.1f %6.1f%% %6.1f%% %9.1f %9.3f %8.4f %+8.4f\n",
+                    res, grid, s.activeVoxels, s.voxelizeSeconds, s.injectSeconds, s.levelsSeconds, mib(s.memoryBytes),
                     mib(s.denseBytes), mib(s.denseCubeBytes), 100.0 * double(s.memoryBytes) / double(s.denseBytes),
-                    100.0 * double(s.memoryBytes) / double(s.denseCubeBytes), aoSeconds,
+                    100.0 * double(s.memoryBytes) / double(s.denseCubeBytes), mib(peakResidentBytes()), aoSeconds,
                     std::sqrt(sq / double(valid)), bias / double(valid));
         std::fflush(stdout);
     }
     std::printf("memory: OpenVDB tree memUsage of every grid and level (opacity, albedo, normal, emission, radiance);"
                 " dense: the same float32 channels over the non-cubic grid and its mips (denseMiB) or over res^3 "
-                "(cubeMiB)\n");
+                "(cubeMiB); peakMiB: the process's peak resident memory so far (the resolutions run in the order "
+                "given, each grid freed before the next)\n");
     return 0;
 }
 

@@ -35,7 +35,8 @@ bool cone_surface(ivec2 pix, out vec3 pWorld, out vec3 n, out vec3 ng) {
 #ifndef CONE_RESOLVE_STAGE
 // The march settings of the uniform block.
 ConeMarch cone_uniformMarch() {
-    return ConeMarch(u.march.x, u.march.y, u.march.w, u.limits.w, u.gridResolution.xyz);
+    return ConeMarch(u.march.x, u.march.y, u.march.w, u.limits.w, u.gridResolution.xyz,
+                     u.lanes.w != 0 ? cone_endRatio(u.march.y) : 0.0);
 }
 
 // The cone set around shading normal n: sum_c w_c * (cone result) integrates the cosine lobe.

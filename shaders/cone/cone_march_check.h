@@ -70,7 +70,7 @@ CONE_FN ConeCheckOutput cone_checkEvaluate(CONE_VOLUME_PARAM ConeCheckInput c) {
     o.frameB = vec4(f[1], 0.0f);
     o.frameN = vec4(f[2], 0.0f);
 
-    ConeMarch m = {c.march.x, c.march.y, c.march.z, c.march.w, vec3(0.0f)};
+    ConeMarch m = {c.march.x, c.march.y, c.march.z, c.march.w, vec3(0.0f), 0.0f};
     vec3 origin = vec3(c.origin);
     vec3 d = vec3(c.direction);
     float lod = cone_footprintLod(m, c.limits.z, c.origin.w, c.direction.w);

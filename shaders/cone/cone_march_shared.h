@@ -57,6 +57,7 @@ struct ConeMarch {
     float maxAlpha;         // the cone closes at this opacity (cone_close)
     float planeRatio;       // plane limit: texels of at most h / ratio voxels at height h; 0 = off
     vec3 levelBase;         // voxels per axis of level 0, for the plane limit's texel size (0: 2^lod)
+    float endRatio;         // vct.end-taper: texels of at most (maxDist - t) / endRatio voxels; 0 = off
 };
 
 // The longest edge, in level-0 voxels, of a texel of level `level` (the volume's GL mip sizes:
@@ -113,7 +114,11 @@ CONE_FN ConeResult cone_marchVolume(CONE_VOLUME_PARAM ConeMarch m, vec3 origin, 
     float t = 0.0f;
     for (int i = 0; i < CONE_MAX_STEPS; ++i) {
         if (t >= maxDist || r.alpha >= m.maxAlpha) break;
-        float lod = CONE_VOLUME_LOD(cone_footprintLod(m, t, h0, rise), origin + d * t);
+        float lod = cone_footprintLod(m, t, h0, rise);
+        // vct.end-taper: whole levels whose texel, sampled half a step on, reaches no further
+        // than maxDist (a trilinear sample sees one texel past its centre).
+        if (m.endRatio > 0.0f) lod = min(lod, floor(log2(max(1.0f, (maxDist - t) / m.endRatio))));
+        lod = CONE_VOLUME_LOD(lod, origin + d * t);
         float dt = min(m.stepFactor * exp2(lod), maxDist - t);
         vec3 p = origin + d * (t + 0.5f * dt);
         lod = CONE_VOLUME_LOD(lod, p);

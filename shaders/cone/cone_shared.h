@@ -187,7 +187,7 @@ struct ConeUniforms {
                            // z = the own stage's first list entry (dispatches of at most 65535 groups),
                            // w = split gathers (CONE_SPLIT_RESUME | CONE_SPLIT_CARRY; 0 = whole)
     ivec4 lanes;           // x = lanes per cone of the set, y = the set-wide index of cones[0] (this slice's first),
-                           // z = vct.aim (1: cone_aimedDirection)
+                           // z = vct.aim (1: cone_aimedDirection), w = vct.end-taper (1: cone_endRatio)
     vec4 coneAxes[CONE_MAX_SET_CONES];  // the set's cones before the lanes (xyz = direction, tangent frame)
     vec4 cones[CONE_BLOCK_CONES];  // xyz = direction in the tangent frame (z = normal), w = weight
 };
@@ -221,6 +221,10 @@ CONE_FN vec3 cone_aimedDirection(vec3 d, vec3 ng, float offset, float maxDist) {
     a = a - ng * min(dot(a, ng), 0.0f);
     return dot(a, a) > 0.0f ? normalize(a) : d;
 }
+// vct.end-taper: a march's sample sits half a step (beta texels) past where its level was chosen
+// and a trilinear sample sees one texel past its centre, so a texel of (maxDist - t) / (1 + beta / 2)
+// voxels chosen at t reaches no further than maxDist.
+CONE_FN float cone_endRatio(float stepFactor) { return 1.0f + 0.5f * stepFactor; }
 // The set's cone of lane `lane` (set-wide index; lanes of a cone are consecutive).
 CONE_FN int cone_laneCone(int lane, int lanesPerCone) { return lane / max(lanesPerCone, 1); }
 

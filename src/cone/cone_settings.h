@@ -45,6 +45,7 @@ struct ConeSettings {
     int dispatchCones = 0;          // vct.dispatch-cones: at most this many cones per dispatch; 0 = the loop budget's
     float sharpen = gpu::CONE_DEFAULT_SHARPEN;  // vct.sharpen: directional levels' filter along their axis (cone_sharpenTexel)
     bool aim = false;               // vct.aim: march each cone towards its ray's point at the max distance
+    bool endTaper = false;          // vct.end-taper: finer levels near the max distance (ConeMarch::endRatio)
     uint32_t seed = 0;              // the render's seed, for the jitter: set by the caller, not a --param
 
     // Throws InternalError naming the field if a value is outside its range.

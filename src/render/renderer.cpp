@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include "core/errors.h"
+#include "core/memory_usage.h"
 #include "core/method.h"
 #include "gl/context.h"
 #include "gl/readback.h"
@@ -260,6 +261,8 @@ nlohmann::json statsJson(const RenderResult& result, const RenderRequest& reques
     j["gl_version"] = info.version;
     j["gl_platform"] = info.platform;
     j["cores"] = std::thread::hardware_concurrency();
+    // The process's peak so far: this render's and any earlier one's in the same process.
+    j["peak_rss_bytes"] = peakResidentBytes();
     j["scene"] = {{"path", scene.path}, {"triangles", scene.triangles.size()},
                   {"materials", scene.materials.size()}, {"lights", scene.lights.size()}};
     j["ao"] = request.ao;

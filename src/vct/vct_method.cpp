@@ -85,6 +85,7 @@ std::string coneExplanation(const RenderRequest& r) {
              "), the base level once per axis";
     }
     if (c.aim) s += ", aimed from their offset start at their rays' points at the maximum distance (vct.aim)";
+    if (c.endTaper) s += ", on levels that reach no further than the maximum distance near its end (vct.end-taper)";
     if (c.traceScale > 1)
         s += ", traced for one pixel per " + std::to_string(c.traceScale) + "x" + std::to_string(c.traceScale) +
              " block and resolved for the others (vct.trace-scale)";

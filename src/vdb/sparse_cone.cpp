@@ -283,6 +283,7 @@ MarchParams marchParams(const SparseVoxelScene& v, const ConeSettings& s) {
     mp.march.maxAlpha = s.maxAlpha;
     mp.march.planeRatio = s.planeLimit ? gpu::CONE_PLANE_LIMIT_RATIO : 0.f;
     mp.march.levelBase = glm::vec3(v.resolution);
+    mp.march.endRatio = s.endTaper ? gpu::cone_endRatio(s.stepFactor) : 0.f;
     mp.offset = s.offsetVoxels;
     mp.sharpen = sharpensLevels(s) ? s.sharpen : 1.f;
     mp.aim = s.aim;

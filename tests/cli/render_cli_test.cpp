@@ -79,6 +79,11 @@ TEST(RenderCli, PngIsWrittenAndStatsHaveTheContractFields) {
     EXPECT_EQ(j["height"], 48);
     EXPECT_GT(j["scene"]["triangles"].get<int>(), 10);
     EXPECT_GE(j["scene"]["lights"].get<int>(), 1);
+    // The process's peak memory: at least the 64x48 render's own targets, and far below a
+    // gigabyte for a box of 32 triangles.
+    ASSERT_TRUE(j.contains("peak_rss_bytes"));
+    EXPECT_GT(j["peak_rss_bytes"].get<double>(), 4.0 * 1024 * 1024);
+    EXPECT_LT(j["peak_rss_bytes"].get<double>(), 1024.0 * 1024 * 1024);
     ASSERT_FALSE(j["passes"].empty());
     for (const auto& p : j["passes"]) {
         EXPECT_TRUE(p.contains("name"));
@@ -141,24 +146,28 @@ TEST(RenderCli, ExplainPrintsRunAndSkippedPasses) {
     auto two = runVct("render scenes/default.gltf --size 16 --gi vct --voxel-res 16 --explain -o " + dir + "/d.png");
     ASSERT_EQ(two.exitCode, 0) << two.output;
     EXPECT_NE(two.output.find("2 " + split), std::string::npos) << two.output;
-    // The cone passes say when they read the directional levels sharpened.
-    auto sharp = runVct("render scenes/cornell_box.gltf --size 16 --ao vct --voxel-res 16 --param vct.sharpen=4 "
-                        "--explain -o " + dir + "/s.png");
-    ASSERT_EQ(sharp.exitCode, 0) << sharp.output;
-    EXPECT_NE(sharp.output.find("sharpened along their axis (vct.sharpen=4)"), std::string::npos) << sharp.output;
-    EXPECT_EQ(sharp.output.find("(vct.aim)"), std::string::npos) << sharp.output;
-    // ... and when their cones are aimed at their rays' points at R.
-    auto aimed = runVct("render scenes/cornell_box.gltf --size 16 --ao vct --voxel-res 16 --param vct.aim=1 "
-                        "--explain -o " + dir + "/a.png");
-    ASSERT_EQ(aimed.exitCode, 0) << aimed.output;
-    EXPECT_NE(aimed.output.find("rays' points at the maximum distance (vct.aim)"), std::string::npos) << aimed.output;
-    // ... and how many lanes auto marches when its base resolution moves: (32 / 16)^2 at 32^3.
-    auto based = runVct("render scenes/cornell_box.gltf --size 16 --ao vct --voxel-res 32 --param vct.lanes=0 "
-                        "--param vct.lanes-base=16 --explain -o " + dir + "/l.png");
-    ASSERT_EQ(based.exitCode, 0) << based.output;
-    EXPECT_NE(based.output.find("each marched as 4 lanes (vct.lanes=auto at 32^3 with vct.lanes-base=16)"),
-              std::string::npos)
-        << based.output;
+    // The cone passes' line says what their cones do beyond the set (`args` -> `says`), and not
+    // what they do not (`unsaid`).
+    auto explainCones = [&](const std::string& args, const std::string& says, const std::string& unsaid,
+                            const std::string& png) {
+        auto r = runVct("render scenes/cornell_box.gltf --size 16 --ao vct " + args + " --explain -o " + dir + "/" + png);
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        EXPECT_NE(r.output.find(says), std::string::npos) << r.output;
+        if (!unsaid.empty()) {
+            EXPECT_EQ(r.output.find(unsaid), std::string::npos) << r.output;
+        }
+    };
+    // The directional levels sharpened; cones aimed at their rays' points at R; levels tapered
+    // to what remains of R near its end; how many lanes auto marches when its base resolution
+    // moves: (32 / 16)^2 at 32^3.
+    explainCones("--voxel-res 16 --param vct.sharpen=4", "sharpened along their axis (vct.sharpen=4)", "(vct.aim)",
+                 "s.png");
+    explainCones("--voxel-res 16 --param vct.aim=1", "rays' points at the maximum distance (vct.aim)",
+                 "(vct.end-taper)", "a.png");
+    explainCones("--voxel-res 16 --param vct.end-taper=1",
+                 "no further than the maximum distance near its end (vct.end-taper)", "(vct.aim)", "t.png");
+    explainCones("--voxel-res 32 --param vct.lanes=0 --param vct.lanes-base=16",
+                 "each marched as 4 lanes (vct.lanes=auto at 32^3 with vct.lanes-base=16)", "", "l.png");
 }
 
 TEST(RenderCli, BadInputFailsCleanlyWithoutOutput) {

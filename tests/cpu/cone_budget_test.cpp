@@ -41,7 +41,7 @@ TEST(ConeBudget, AMarchTakesNoMoreStepsThanTheBound) {
         // longest march there is.
         const float rise = (i % 3 == 0) ? 0.f : unit(rng);
         const float planeRatio = (i % 2 == 0) ? gpu::CONE_PLANE_LIMIT_RATIO : 0.f;
-        const gpu::ConeMarch m{tanHalf, beta, 1.f, planeRatio, glm::vec3(64.f, 41.f, 64.f)};
+        const gpu::ConeMarch m{tanHalf, beta, 1.f, planeRatio, glm::vec3(64.f, 41.f, 64.f), 0.f};
         const gpu::ConeResult r =
             gpu::cone_marchVolume(volume, m, glm::vec3(0.f), glm::vec3(0.f, 0.f, 1.f), 1.5f, rise, maxDist, 0.f);
         EXPECT_LE((long long)r.samples, boundSteps(maxDist, beta))
@@ -49,7 +49,7 @@ TEST(ConeBudget, AMarchTakesNoMoreStepsThanTheBound) {
         ++checked;
     }
     // A cone along the plane with the plane limit meets the bound within two steps.
-    const gpu::ConeMarch flat{0.5f, 0.5f, 1.f, gpu::CONE_PLANE_LIMIT_RATIO, glm::vec3(0.f)};
+    const gpu::ConeMarch flat{0.5f, 0.5f, 1.f, gpu::CONE_PLANE_LIMIT_RATIO, glm::vec3(0.f), 0.f};
     const gpu::ConeResult r =
         gpu::cone_marchVolume(volume, flat, glm::vec3(0.f), glm::vec3(1.f, 0.f, 0.f), 1.5f, 0.f, 100.f, 0.f);
     EXPECT_GE((long long)r.samples + 2, boundSteps(100.f, 0.5f));

@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 namespace vct {
 namespace {
@@ -26,7 +27,7 @@ struct UniformMedium {
     float facing(glm::vec3, glm::vec3, float, glm::vec4) const { return 1.f; }
 };
 
-gpu::ConeMarch march(float maxAlpha) { return {0.1f, 0.5f, maxAlpha, 0.f, glm::vec3(0.f)}; }
+gpu::ConeMarch march(float maxAlpha) { return {0.1f, 0.5f, maxAlpha, 0.f, glm::vec3(0.f), 0.f}; }
 
 TEST(ConeMarch, UniformMediumCompositesToItsTransmittance) {
     UniformMedium medium{0.2f, {0.5f, 0.25f, 1.f}};
@@ -50,11 +51,11 @@ TEST(ConeMarch, SaturatedConeClosesToTheMediumsColour) {
 }
 
 TEST(ConeMarch, FootprintAndPlaneLimitLevels) {
-    const gpu::ConeMarch open{0.5f, 0.5f, 0.99f, 0.f, glm::vec3(0.f)};
+    const gpu::ConeMarch open{0.5f, 0.5f, 0.99f, 0.f, glm::vec3(0.f), 0.f};
     EXPECT_EQ(gpu::cone_footprintLod(open, 0.5f, 1.5f, 0.f), 0.f) << "at least one voxel";
     EXPECT_NEAR(gpu::cone_footprintLod(open, 8.f, 1.5f, 0.f), 3.f, 1e-6f) << "diameter 2 t tan = 8 voxels";
     // Plane limit: whole levels of at most h / 1.5 voxels, h = h0 + t rise.
-    const gpu::ConeMarch limited{0.5f, 0.5f, 0.99f, 1.5f, glm::vec3(0.f)};
+    const gpu::ConeMarch limited{0.5f, 0.5f, 0.99f, 1.5f, glm::vec3(0.f), 0.f};
     EXPECT_EQ(gpu::cone_footprintLod(limited, 8.f, 1.5f, 0.f), 0.f) << "a cone along the plane stays at level 0";
     EXPECT_EQ(gpu::cone_footprintLod(limited, 8.f, 1.5f, 0.5f), 1.f) << "h = 5.5: texels of 2 voxels";
     EXPECT_EQ(gpu::cone_footprintLod(limited, 8.f, 1.5f, 1.f), 2.f) << "h = 9.5: texels of 4 voxels";
@@ -73,8 +74,8 @@ TEST(ConeMarch, ThePlaneLimitMeasuresTheTexelsALevelHas) {
     // One texel along an axis shorter than 2^level spans the axis, less than 2^level.
     EXPECT_EQ(gpu::cone_texelExtent(glm::vec3(64.f, 11.f, 64.f), 4.f), 16.f);
     EXPECT_NEAR(gpu::cone_texelExtent(glm::vec3(64.f, 11.f, 64.f), 3.f), 11.f, 1e-6f);
-    const gpu::ConeMarch cube{0.5f, 0.5f, 0.99f, 1.5f, glm::vec3(128.f)};
-    const gpu::ConeMarch tall{0.5f, 0.5f, 0.99f, 1.5f, glm::vec3(128.f, 127.f, 128.f)};
+    const gpu::ConeMarch cube{0.5f, 0.5f, 0.99f, 1.5f, glm::vec3(128.f), 0.f};
+    const gpu::ConeMarch tall{0.5f, 0.5f, 0.99f, 1.5f, glm::vec3(128.f, 127.f, 128.f), 0.f};
     EXPECT_EQ(gpu::cone_footprintLod(cube, 200.f, 0.f, 0.3f), 5.f) << "h = 60, reach 40: 32-voxel texels";
     EXPECT_EQ(gpu::cone_footprintLod(tall, 200.f, 0.f, 0.3f), 4.f) << "level 5's texels are 42.3 > 40";
     EXPECT_EQ(gpu::cone_footprintLod(tall, 200.f, 0.f, 0.5f), 5.f) << "h = 100, reach 66.7";
@@ -87,6 +88,51 @@ TEST(ConeMarch, LeavingOnlyOutsideAndMovingAway) {
     EXPECT_TRUE(gpu::cone_leaving({34.f, 16.f, 16.f}, {1.f, 0.f, 0.f}, size, 1.5f));
     EXPECT_FALSE(gpu::cone_leaving({34.f, 16.f, 16.f}, {-1.f, 0.f, 0.f}, size, 1.5f)) << "coming back in";
     EXPECT_TRUE(gpu::cone_leaving({16.f, -2.f, 16.f}, {0.f, 0.f, 1.f}, size, 1.5f)) << "not coming back";
+}
+
+// An empty volume that records where a march samples and at which level.
+struct RecordingVolume {
+    std::vector<glm::vec4> samples;  // position, level
+    float lod(float l, glm::vec3) const { return l; }
+    bool leaving(glm::vec3, glm::vec3, float) const { return false; }
+    glm::vec4 sample(glm::vec3 p, glm::vec3, float l) {
+        samples.push_back(glm::vec4(p, l));
+        return glm::vec4(0.f);
+    }
+    float facing(glm::vec3, glm::vec3, float, glm::vec4) const { return 1.f; }
+};
+
+// vct.end-taper: a trilinear sample at distance s of level l sees up to s + 2^ceil(l). Untapered, a
+// wide cone's last samples reach a footprint past the maximum distance; tapered, whole levels
+// whose reach ends at it, down to level 0, whose texel is the only reach left past it, at the
+// price of a few more steps.
+TEST(ConeMarch, ATaperedEndSamplesNothingPastTheMaximumDistance) {
+    const float maxDist = 40.f;
+    const glm::vec3 d(0.f, 0.f, 1.f);
+    gpu::ConeMarch m{0.5f, 0.5f, 0.99f, 0.f, glm::vec3(0.f), 0.f};
+    RecordingVolume plain, tapered;
+    gpu::cone_marchVolume(plain, m, glm::vec3(0.f), d, 1.5f, 1.f, maxDist, 0.f);
+    m.endRatio = gpu::cone_endRatio(m.stepFactor);
+    EXPECT_FLOAT_EQ(m.endRatio, 1.25f) << "half a step of beta = 0.5 texels, and the texel the sample sees past it";
+    gpu::cone_marchVolume(tapered, m, glm::vec3(0.f), d, 1.5f, 1.f, maxDist, 0.f);
+    // A fractional level blends in the next coarser one: its texel is the reach.
+    auto reach = [](const glm::vec4& s) { return s.z + std::exp2(std::ceil(s.w)); };
+    ASSERT_FALSE(plain.samples.empty());
+    EXPECT_GT(reach(plain.samples.back()), maxDist + 8.f) << "the last footprint is about 40 voxels wide";
+    for (size_t i = 0; i < tapered.samples.size(); ++i) {
+        const glm::vec4& s = tapered.samples[i];
+        if (s.w > 0.f) {
+            EXPECT_LE(reach(s), maxDist + 1e-4f) << "sample " << i << " at " << s.z << ", level " << s.w;
+        } else {
+            EXPECT_LE(reach(s), maxDist + 1.f) << "sample " << i;
+        }
+    }
+    // The march still ends at the maximum distance, in a few more steps.
+    EXPECT_GT(tapered.samples.back().z, maxDist - 0.5f);
+    EXPECT_GT(tapered.samples.size(), plain.samples.size());
+    EXPECT_LE(tapered.samples.size(), plain.samples.size() + 12);
+    // Before the end both march the footprint's level.
+    EXPECT_EQ(tapered.samples[0], plain.samples[0]);
 }
 
 TEST(TangentFrame, OrthonormalAroundTheNormalForBothSigns) {

@@ -367,3 +367,41 @@ TEST(VctConvergence, AFinerLaneBaseNarrowsTheSmallRoomsEdgeLeak) {
 TEST(VctConvergence, SparseLanesAtAFinerBaseMatchTheDenseOnes) {
     expectBackendsAgree(params({"vct.lanes=0", "vct.lanes-base=16", "vct.grid=cube", "vct.sharpen=4", "vct.aim=1"}));
 }
+
+// vct.end-taper on the wall: a point 1.01 R from it (AO 1 exactly) is seen darkened by the
+// last samples' texels, which hold the wall past R, unless the march tapers its levels to
+// what remains of R; the points 0.5 R..0.85 R from the wall lose most of that darkening.
+TEST(VctConvergence, TaperedEndsStopSeeingTheWallPastR) {
+    const ParamMap plain = params({"vct.lanes=0", "vct.grid=cube", "vct.sharpen=4", "vct.aim=1"});
+    const ParamMap tapered = params({"vct.lanes=0", "vct.grid=cube", "vct.sharpen=4", "vct.aim=1", "vct.end-taper=1"});
+    AoConvergenceCase wall;
+    for (AoConvergenceCase& c : aoConvergenceCases())
+        if (c.name == "wall off") wall = std::move(c);
+    ASSERT_EQ(wall.family, "wall");
+    const std::vector<double> exact = exactAoAt(wall), model = coneModelAoAt(wall, plain);
+    const std::vector<double> before = vctAoAt(wall, 128, "vdb", plain), after = vctAoAt(wall, 128, "vdb", tapered);
+    double farBefore = 0.0, farAfter = 0.0;
+    int far = 0, past = 0;
+    for (size_t i = 0; i < wall.points.size(); ++i) {
+        const float d = wall.points[i].x;  // the wall is the plane x = 0
+        if (d > 1.f && d < 1.1f) {
+            ++past;
+            EXPECT_EQ(exact[i], 1.0) << "point " << i << " at " << d << " R";
+            EXPECT_LT(before[i], 0.99) << "point " << i << ": the footprint's texel holds the wall past R";
+            EXPECT_GT(after[i], 0.999) << "point " << i;
+        } else if (d >= 0.5f && d <= 1.f) {
+            ++far;
+            farBefore += std::abs(before[i] - model[i]);
+            farAfter += std::abs(after[i] - model[i]);
+        }
+    }
+    ASSERT_EQ(past, 1);
+    ASSERT_GE(far, 4);
+    std::cerr << "wall at 128^3, points 0.5 R..R from it: mean |VCT - cone model| " << farBefore / far << " -> "
+              << farAfter / far << "\n";
+    EXPECT_LT(farAfter, 0.5 * farBefore);
+}
+
+TEST(VctConvergence, SparseTaperedEndsMatchTheDenseOnes) {
+    expectBackendsAgree(params({"vct.lanes=0", "vct.grid=cube", "vct.sharpen=4", "vct.aim=1", "vct.end-taper=1"}));
+}
