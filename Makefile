@@ -101,6 +101,9 @@ convergence: build
 	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend vdb --param vct.lanes=0 --param vct.lanes-base=16 \
 		--param vct.grid=cube --param vct.sharpen=4 --param vct.aim=1 --param vct.end-taper=1 \
 		--markdown docs/convergence_vdb_lanes16_sharpen_aim_taper.md
+	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend vdb --param vct.lanes=0 --param vct.lanes-base=16 \
+		--param vct.grid=cube --param vct.sharpen=4 --param vct.aim=1 --param vct.level-bias=-1 \
+		--markdown docs/convergence_vdb_lanes16_sharpen_aim_bias.md
 	./$(BUILD)/bench_convergence --res 128,256,512 --backend vdb --param vct.cones=32 --param vct.lanes=31 \
 		--param vct.grid=cube --param vct.sharpen=4 --param vct.aim=1 --markdown docs/convergence_vdb_lanes32_sharpen_aim.md
 	./$(BUILD)/bench_convergence --schedule 64:6,128:16,256:64:64,512:64:64 --backend vdb --param vct.grid=cube \

@@ -52,7 +52,8 @@ VCT_BEGIN_NAMESPACE
 
 // The settings a march reads besides its volume (ConeUniforms::march and ::limits).
 struct ConeMarch {
-    float tanHalfAperture;  // tan(aperture / 2)
+    float tanHalfAperture;  // tan(aperture / 2), times 2^(vct.level-bias): the level of the footprint at t is
+                            // log2(2 t tanHalfAperture)
     float stepFactor;       // beta: each step is beta footprints long
     float maxAlpha;         // the cone closes at this opacity (cone_close)
     float planeRatio;       // plane limit: texels of at most h / ratio voxels at height h; 0 = off

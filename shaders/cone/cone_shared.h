@@ -154,6 +154,15 @@ VCT_CONST float CONE_FALLOFF_LAMBDA_R = 4.0;
 // samples the opaque 3/4 of a texel it leaves, where 2 leaves half a texel to miss.
 VCT_CONST float CONE_DEFAULT_SHARPEN = 1.0;
 VCT_CONST float CONE_SHARPEN_MAX = 16.0;
+// vct.level-bias: a footprint of diameter D samples level log2(D) + b (Crassin 2011: b = 0). A
+// trilinear sample's tent is two texels wide, twice the footprint at b = 0, so a narrow lane sees
+// what lies up to a footprint beside its cap; b = -1 makes the tent the footprint's width, at up
+// to twice the samples (a step is beta texels). Narrow lanes gain; the default wide cones do not
+// (their footprint's own error is the larger). Below -2 a step is a quarter of the footprint or
+// less and nothing more is seen; above 1 a sample blurs across four footprints.
+VCT_CONST float CONE_DEFAULT_LEVEL_BIAS = 0.0;
+VCT_CONST float CONE_LEVEL_BIAS_MIN = -2.0;
+VCT_CONST float CONE_LEVEL_BIAS_MAX = 1.0;
 
 // vct.sharpen's filter along one axis: the coordinate, in texels of one level (centres at
 // i + 1/2), at which linear filtering gives texel i + 1 the weight clamp((f - 1/2) s + 1/2, 0, 1)
@@ -175,7 +184,8 @@ struct ConeUniforms {
     mat4 voxelFromWorld;   // world -> voxel units [0, resolution]
     mat4 worldFromView;    // rayMarchVoxels: camera frame
     vec4 gridResolution;   // xyz voxels per axis, w = mip levels
-    vec4 march;            // x = tan(aperture / 2), y = step factor beta, z = offset (voxels), w = max alpha
+    vec4 march;            // x = tan(aperture / 2) 2^(vct.level-bias), y = step factor beta, z = offset (voxels),
+                           // w = max alpha
     vec4 limits;           // x = max distance (voxels), y = sky radiance, z = falloff lambda (1/voxels),
                            // w = plane-limit ratio (0 = off)
     vec4 camera;           // x = tan(yfov / 2) * aspect, y = tan(yfov / 2), z = ray step (voxels),

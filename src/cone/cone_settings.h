@@ -46,6 +46,7 @@ struct ConeSettings {
     float sharpen = gpu::CONE_DEFAULT_SHARPEN;  // vct.sharpen: directional levels' filter along their axis (cone_sharpenTexel)
     bool aim = false;               // vct.aim: march each cone towards its ray's point at the max distance
     bool endTaper = false;          // vct.end-taper: finer levels near the max distance (ConeMarch::endRatio)
+    float levelBias = gpu::CONE_DEFAULT_LEVEL_BIAS;  // vct.level-bias: level log2(footprint) + b
     uint32_t seed = 0;              // the render's seed, for the jitter: set by the caller, not a --param
 
     // Throws InternalError naming the field if a value is outside its range.
@@ -63,6 +64,11 @@ struct ConeLanes coneMarchLanes(const ConeSettings& s, int maxResolution);
 ConeSettings readConeSettings(const ParamMap& params);  // coneSettings().read(params)
 // ConeSettings::seed from a render's 64-bit seed (both halves folded in).
 inline uint32_t coneJitterSeed(uint64_t seed) { return uint32_t(seed) ^ uint32_t(seed >> 32); }
+
+// ConeMarch::tanHalfAperture of a march whose cones (or lanes) have half-angle `halfAperture`
+// (radians): tan(halfAperture) 2^(vct.level-bias), so the footprint's level carries the bias
+// (times exactly 1 at the default 0).
+float coneFootprintTangent(const ConeSettings& s, float halfAperture);
 
 // True when the directional levels are to hold optical depth: vct.opacity=depth, which only
 // the directional levels carry (vct.aniso=1). The one rule the mip builders of both backends,

@@ -86,6 +86,12 @@ std::string coneExplanation(const RenderRequest& r) {
     }
     if (c.aim) s += ", aimed from their offset start at their rays' points at the maximum distance (vct.aim)";
     if (c.endTaper) s += ", on levels that reach no further than the maximum distance near its end (vct.end-taper)";
+    if (c.levelBias != gpu::CONE_DEFAULT_LEVEL_BIAS) {
+        std::ostringstream bias;
+        bias << ", sampling the level log2(footprint) " << (c.levelBias < 0.f ? "- " : "+ ") << std::abs(c.levelBias)
+             << " (vct.level-bias=" << c.levelBias << ")";
+        s += bias.str();
+    }
     if (c.traceScale > 1)
         s += ", traced for one pixel per " + std::to_string(c.traceScale) + "x" + std::to_string(c.traceScale) +
              " block and resolved for the others (vct.trace-scale)";

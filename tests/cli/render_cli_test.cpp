@@ -158,14 +158,16 @@ TEST(RenderCli, ExplainPrintsRunAndSkippedPasses) {
         }
     };
     // The directional levels sharpened; cones aimed at their rays' points at R; levels tapered
-    // to what remains of R near its end; how many lanes auto marches when its base resolution
-    // moves: (32 / 16)^2 at 32^3.
+    // to what remains of R near its end; a footprint's level moved; how many lanes auto marches
+    // when its base resolution moves: (32 / 16)^2 at 32^3.
     explainCones("--voxel-res 16 --param vct.sharpen=4", "sharpened along their axis (vct.sharpen=4)", "(vct.aim)",
                  "s.png");
     explainCones("--voxel-res 16 --param vct.aim=1", "rays' points at the maximum distance (vct.aim)",
                  "(vct.end-taper)", "a.png");
     explainCones("--voxel-res 16 --param vct.end-taper=1",
                  "no further than the maximum distance near its end (vct.end-taper)", "(vct.aim)", "t.png");
+    explainCones("--voxel-res 16 --param vct.level-bias=-1",
+                 "sampling the level log2(footprint) - 1 (vct.level-bias=-1)", "(vct.end-taper)", "b.png");
     explainCones("--voxel-res 32 --param vct.lanes=0 --param vct.lanes-base=16",
                  "each marched as 4 lanes (vct.lanes=auto at 32^3 with vct.lanes-base=16)", "", "l.png");
 }
@@ -194,6 +196,7 @@ TEST(RenderCli, BadInputFailsCleanlyWithoutOutput) {
         {"render scenes/cornell_box.gltf --ao vct --param vct.grid-shift=0.5 --param vct.clipmap.levels=3 -o " + out,
          2, "vct.grid-shift"},
         {"render scenes/cornell_box.gltf --ao vct --param vct.lanes-base=16 -o " + out, 2, "needs vct.lanes=0"},
+        {"render scenes/cornell_box.gltf --ao vct --param vct.level-bias=-3 -o " + out, 2, "vct.level-bias"},
         {"render scenes/cornell_box.gltf --ao vct --param vct.lanes=0 --param vct.lanes-base=2 -o " + out, 2,
          "vct.lanes-base"},
         {"render scenes/cornell_box.gltf --ao vct --param vct.grid-shift=1.5 -o " + out, 2, "vct.grid-shift"},

@@ -5,6 +5,7 @@
 // tests/gpu/cone_march_shared_test.cpp holds the shaders to the same text.
 #include "common/tangent_frame.h"
 #include "cone/cone_march_shared.h"
+#include "cone/cone_settings.h"
 #include "reference/sampling_math.h"
 
 #include <gtest/gtest.h>
@@ -88,6 +89,22 @@ TEST(ConeMarch, LeavingOnlyOutsideAndMovingAway) {
     EXPECT_TRUE(gpu::cone_leaving({34.f, 16.f, 16.f}, {1.f, 0.f, 0.f}, size, 1.5f));
     EXPECT_FALSE(gpu::cone_leaving({34.f, 16.f, 16.f}, {-1.f, 0.f, 0.f}, size, 1.5f)) << "coming back in";
     EXPECT_TRUE(gpu::cone_leaving({16.f, -2.f, 16.f}, {0.f, 0.f, 1.f}, size, 1.5f)) << "not coming back";
+}
+
+// vct.level-bias moves the footprint's level by b through the march's tangent (exactly the
+// unbiased tangent at 0, so the default march is unchanged to the bit).
+TEST(ConeMarch, TheLevelBiasMovesTheFootprintsLevel) {
+    ConeSettings s;
+    volatile float runtime = 0.5f * 60.f * float(M_PI) / 180.f;  // tan at run time, as the passes call it
+    const float half = runtime;
+    EXPECT_EQ(coneFootprintTangent(s, half), std::tan(half));
+    for (float b : {-2.f, -1.f, -0.5f, 1.f}) {
+        s.levelBias = b;
+        const gpu::ConeMarch m{coneFootprintTangent(s, half), 0.5f, 0.99f, 0.f, glm::vec3(0.f), 0.f};
+        // Diameter 2 t tan(30 deg) = 36.95 voxels at t = 32: level 5.208 + b, never below 0.
+        EXPECT_NEAR(gpu::cone_footprintLod(m, 32.f, 1.5f, 0.f), std::log2(64.f * std::tan(half)) + b, 1e-5f) << b;
+        EXPECT_EQ(gpu::cone_footprintLod(m, 0.25f, 1.5f, 0.f), 0.f) << b << ": at least one voxel";
+    }
 }
 
 // An empty volume that records where a march samples and at which level.
