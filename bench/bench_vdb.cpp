@@ -9,9 +9,9 @@
 // benchmark prints a note and exits 0 when it is missing. VCT_VDB_RES=64,128 picks resolutions.
 #include "bench_main.h"
 #include "core/memory_usage.h"
+#include "core/view.h"
 #include "reference/embree_scene.h"
 #include "reference/reference_ao.h"
-#include "core/view.h"
 #include "scene/gltf_loader.h"
 #include "vdb/sparse_cone.h"
 

@@ -128,7 +128,7 @@ const SettingsTable<ConeSettings>& coneSettings() {
                   "the level a footprint of diameter D samples is log2(D) + b (texels of D 2^b voxels, at least one). "
                   "A trilinear sample's tent spans two texels, twice the footprint at b = 0, so a lane sees what "
                   "lies up to a footprint beside its cap (a wall beside a point, past an occluder's edge); -1 makes "
-                  "the tent the footprint's width, at twice the samples (a step is beta texels). Measured on the "
+                  "the tent the footprint's width, at up to twice the samples (a step is beta texels). Measured on the "
                   "closed-form families with 6 cones in auto lanes on a cube, sharpened and aimed: mean voxel error "
                   "at 256^3 0.0178 -> 0.0166 (base 32) and 0.0157 -> 0.0135 (vct.lanes-base=16), the voxel error's rule "
                   "in 7 and 8 of 16 open cases against 5 and 7, at +21% samples (base 32, 128^3). The default wide "

@@ -41,11 +41,13 @@ TEST(ConeBudget, AMarchTakesNoMoreStepsThanTheBound) {
         // longest march there is.
         const float rise = (i % 3 == 0) ? 0.f : unit(rng);
         const float planeRatio = (i % 2 == 0) ? gpu::CONE_PLANE_LIMIT_RATIO : 0.f;
-        const gpu::ConeMarch m{tanHalf, beta, 1.f, planeRatio, glm::vec3(64.f, 41.f, 64.f), 0.f};
+        // vct.end-taper: finer levels near the end, never below level 0, so still beta a step.
+        const float endRatio = (i % 5 < 2) ? gpu::cone_endRatio(beta) : 0.f;
+        const gpu::ConeMarch m{tanHalf, beta, 1.f, planeRatio, glm::vec3(64.f, 41.f, 64.f), endRatio};
         const gpu::ConeResult r =
             gpu::cone_marchVolume(volume, m, glm::vec3(0.f), glm::vec3(0.f, 0.f, 1.f), 1.5f, rise, maxDist, 0.f);
         EXPECT_LE((long long)r.samples, boundSteps(maxDist, beta))
-            << "beta " << beta << " R " << maxDist << " rise " << rise;
+            << "beta " << beta << " R " << maxDist << " rise " << rise << " end ratio " << endRatio;
         ++checked;
     }
     // A cone along the plane with the plane limit meets the bound within two steps.
