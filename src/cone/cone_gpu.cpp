@@ -50,9 +50,8 @@ gpu::ConeUniforms coneUniforms(bool gi, const VoxelGrid& grid, float maxDistWorl
     setGridUniforms(u, grid);
     const int maxRes = std::max(grid.resolution.x, std::max(grid.resolution.y, grid.resolution.z));
     const ConeLanes lanes = coneMarchLanes(settings, maxRes);
-    const float halfAperture = 0.5f * lanes.apertureDeg * float(M_PI) / 180.f;
     const float maxDist = maxDistWorld / grid.voxelSize;
-    u.march = glm::vec4(coneFootprintTangent(settings, halfAperture), settings.stepFactor, settings.offsetVoxels,
+    u.march = glm::vec4(coneFootprintTangent(settings, lanes.apertureDeg), settings.stepFactor, settings.offsetVoxels,
                         settings.maxAlpha);
     const float falloff = (!gi && settings.aoMapping == ConeAoMapping::Falloff && maxDist > 0.f)
                               ? gpu::CONE_FALLOFF_LAMBDA_R / maxDist

@@ -175,8 +175,8 @@ const SettingsTable<ConeSettings>& coneSettings() {
     return table;
 }
 
-float coneFootprintTangent(const ConeSettings& s, float halfAperture) {
-    return std::tan(halfAperture) * std::exp2(s.levelBias);
+float coneFootprintTangent(const ConeSettings& s, float apertureDeg) {
+    return std::tan(0.5f * apertureDeg * float(M_PI) / 180.f) * std::exp2(s.levelBias);
 }
 
 ConeSettings readConeSettings(const ParamMap& params) {

@@ -65,10 +65,10 @@ ConeSettings readConeSettings(const ParamMap& params);  // coneSettings().read(p
 // ConeSettings::seed from a render's 64-bit seed (both halves folded in).
 inline uint32_t coneJitterSeed(uint64_t seed) { return uint32_t(seed) ^ uint32_t(seed >> 32); }
 
-// ConeMarch::tanHalfAperture of a march whose cones (or lanes) have half-angle `halfAperture`
-// (radians): tan(halfAperture) 2^(vct.level-bias), so the footprint's level carries the bias
-// (times exactly 1 at the default 0).
-float coneFootprintTangent(const ConeSettings& s, float halfAperture);
+// ConeMarch::tanHalfAperture of a march whose cones (or lanes) have the full aperture
+// `apertureDeg` (ConeLanes::apertureDeg): tan(aperture / 2) 2^(vct.level-bias), so the
+// footprint's level carries the bias (times exactly 1 at the default 0).
+float coneFootprintTangent(const ConeSettings& s, float apertureDeg);
 
 // True when the directional levels are to hold optical depth: vct.opacity=depth, which only
 // the directional levels carry (vct.aniso=1). The one rule the mip builders of both backends,

@@ -278,7 +278,7 @@ MarchParams marchParams(const SparseVoxelScene& v, const ConeSettings& s) {
     mp.axes = lanes.axes;
     mp.lanesPerCone = lanes.lanesPerCone;
     mp.laneApertureDeg = lanes.apertureDeg;
-    mp.march.tanHalfAperture = coneFootprintTangent(s, 0.5f * lanes.apertureDeg * float(M_PI) / 180.f);
+    mp.march.tanHalfAperture = coneFootprintTangent(s, lanes.apertureDeg);
     mp.march.stepFactor = s.stepFactor;
     mp.march.maxAlpha = s.maxAlpha;
     mp.march.planeRatio = s.planeLimit ? gpu::CONE_PLANE_LIMIT_RATIO : 0.f;

@@ -95,12 +95,12 @@ TEST(ConeMarch, LeavingOnlyOutsideAndMovingAway) {
 // unbiased tangent at 0, so the default march is unchanged to the bit).
 TEST(ConeMarch, TheLevelBiasMovesTheFootprintsLevel) {
     ConeSettings s;
-    volatile float runtime = 0.5f * 60.f * float(M_PI) / 180.f;  // tan at run time, as the passes call it
-    const float half = runtime;
-    EXPECT_EQ(coneFootprintTangent(s, half), std::tan(half));
+    volatile float runtime = 60.f;  // tan at run time, as the passes call it
+    const float aperture = runtime, half = 0.5f * aperture * float(M_PI) / 180.f;
+    EXPECT_EQ(coneFootprintTangent(s, aperture), std::tan(half));
     for (float b : {-2.f, -1.f, -0.5f, 1.f}) {
         s.levelBias = b;
-        const gpu::ConeMarch m{coneFootprintTangent(s, half), 0.5f, 0.99f, 0.f, glm::vec3(0.f), 0.f};
+        const gpu::ConeMarch m{coneFootprintTangent(s, aperture), 0.5f, 0.99f, 0.f, glm::vec3(0.f), 0.f};
         // Diameter 2 t tan(30 deg) = 36.95 voxels at t = 32: level 5.208 + b, never below 0.
         EXPECT_NEAR(gpu::cone_footprintLod(m, 32.f, 1.5f, 0.f), std::log2(64.f * std::tan(half)) + b, 1e-5f) << b;
         EXPECT_EQ(gpu::cone_footprintLod(m, 0.25f, 1.5f, 0.f), 0.f) << b << ": at least one voxel";

@@ -47,6 +47,13 @@ std::vector<CaseErrors> voxelErrors(const std::vector<int>& resolutions, const s
     return out;
 }
 
+// The harness's case of that name; an empty case (no name, no points) if there is none.
+AoConvergenceCase caseNamed(const std::string& name) {
+    for (AoConvergenceCase& c : aoConvergenceCases())
+        if (c.name == name) return std::move(c);
+    return {};
+}
+
 double mean(const std::vector<CaseErrors>& errors, int res) {
     double s = 0.0;
     for (const CaseErrors& e : errors) s += e.voxel.at(res);
@@ -306,11 +313,8 @@ TEST(VctConvergence, SparseGiMatchesTheDenseGi) {
 // occluded.
 TEST(VctConvergence, LaneTraceAddsUpToTheMarchAndScoresEachLane) {
     const ParamMap p = params({"vct.lanes=0", "vct.grid=cube", "vct.sharpen=4", "vct.aim=1"});
-    const std::vector<AoConvergenceCase> cases = aoConvergenceCases();
-    const auto it = std::find_if(cases.begin(), cases.end(),
-                                 [](const AoConvergenceCase& c) { return c.name == "plate h=0.5R a=2R off"; });
-    ASSERT_NE(it, cases.end());
-    const AoConvergenceCase& c = *it;
+    const AoConvergenceCase c = caseNamed("plate h=0.5R a=2R off");
+    ASSERT_EQ(c.name, "plate h=0.5R a=2R off");
     const std::vector<double> vct = vctAoAt(c, 64, "vdb", p);
     for (size_t i : {size_t(6), size_t(12), size_t(14)}) {  // under the plate, its centre, R/2 past its edge
         const AoLaneTrace t = vctAoLanesAt(c, 64, p, i);
@@ -346,11 +350,6 @@ TEST(VctConvergence, LaneTraceAddsUpToTheMarchAndScoresEachLane) {
     EXPECT_THROW(vctAoLanesAt(c, 32, p, c.points.size()), UsageError);
 }
 
-// vct.lanes-base=16: auto marches (res / 16)^2 lanes per cone, four times base 32's, each half as
-// wide, so half as many pass within a voxel or two of the small closed room's edges, where a lane
-// crossing the prefiltered corner leaks (docs/convergence.md, "Lane by lane"). The room leaves
-// nothing open (cone model 0): at 128^3 (sparse, 6 cones on a cube, sharpened and aimed) its
-// voxel error measured 0.0113 against 0.0415 at base 32. Both backends march the same lanes.
 // The small closed room (exact AO 0 at every point) at 128^3, sparse: the voxel error with
 // `after` below half that with `before`, and below `bound`.
 void expectTheSmallRoomsLeakFalls(const ParamMap& before, const ParamMap& after, double bound) {
@@ -365,6 +364,11 @@ void expectTheSmallRoomsLeakFalls(const ParamMap& before, const ParamMap& after,
     EXPECT_LT(now, bound) << c.name;
 }
 
+// vct.lanes-base=16: auto marches (res / 16)^2 lanes per cone, four times base 32's, each half as
+// wide, so half as many pass within a voxel or two of the small closed room's edges, where a lane
+// crossing the prefiltered corner leaks (docs/convergence.md, "Lane by lane"). The room leaves
+// nothing open (cone model 0): at 128^3 (sparse, 6 cones on a cube, sharpened and aimed) its
+// voxel error measured 0.0113 against 0.0415 at base 32. Both backends march the same lanes.
 TEST(VctConvergence, AFinerLaneBaseNarrowsTheSmallRoomsEdgeLeak) {
     expectTheSmallRoomsLeakFalls(params({"vct.lanes=0", "vct.grid=cube", "vct.sharpen=4", "vct.aim=1"}),
                                  params({"vct.lanes=0", "vct.lanes-base=16", "vct.grid=cube", "vct.sharpen=4", "vct.aim=1"}),
@@ -381,9 +385,7 @@ TEST(VctConvergence, SparseLanesAtAFinerBaseMatchTheDenseOnes) {
 TEST(VctConvergence, TaperedEndsStopSeeingTheWallPastR) {
     const ParamMap plain = params({"vct.lanes=0", "vct.grid=cube", "vct.sharpen=4", "vct.aim=1"});
     const ParamMap tapered = params({"vct.lanes=0", "vct.grid=cube", "vct.sharpen=4", "vct.aim=1", "vct.end-taper=1"});
-    AoConvergenceCase wall;
-    for (AoConvergenceCase& c : aoConvergenceCases())
-        if (c.name == "wall off") wall = std::move(c);
+    const AoConvergenceCase wall = caseNamed("wall off");
     ASSERT_EQ(wall.family, "wall");
     const std::vector<double> exact = exactAoAt(wall), model = coneModelAoAt(wall, plain);
     const std::vector<double> before = vctAoAt(wall, 128, "vdb", plain), after = vctAoAt(wall, 128, "vdb", tapered);
