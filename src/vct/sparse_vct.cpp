@@ -21,7 +21,7 @@ SparseFrame& sparseFrameFor(MethodContext& ctx, SparseVolumeCache& cache, const 
     const bool inject = ctx.plan.runs(kPassInject);
     // The dense path's choices, so that the backends differ only in storage and sampling:
     // its region (fit to the view for AO) and its directional levels.
-    const VoxelRegion region = chooseVoxelRegion(r, ctx.scene, ctx.gbuffer, cone.apertureDeg, cone.offsetVoxels);
+    const VoxelRegion region = chooseVoxelRegion(r, ctx.scene, ctx.gbuffer, cone);
     SparseBuildOptions options;
     options.region = region.bounds;
     options.anisotropic = cone.anisotropic;

@@ -17,6 +17,12 @@ const SettingsTable<VctSettings>& vctSettings() {
             .choice("vct.grid", &VctSettings::grid, {{"fit", "fit"}, {"cube", "cube"}},
                     "grid shape: fit = each axis as long as the region needs; cube = every axis as long as the "
                     "longest, the region centred, so every mip level has cubic texels (costs memory on flat regions)")
+            .choice("vct.fit-reach", &VctSettings::fitReach, {{"cones", "cones"}, {"lanes", "lanes"}},
+                    "how far past the visible points a fitted region (vct.region=fit) reaches: cones = R plus the "
+                    "cone set's footprint radius at R (R tan(aperture / 2)); lanes = R plus the footprint radius at R "
+                    "of what the march traces, its lanes (vct.lanes) at the level bias (vct.level-bias): the same "
+                    "voxels over less space when the lanes are narrower than their cones. Equal for one lane a cone "
+                    "at bias 0; cones is the default every table of docs/convergence*.md was generated with")
             .real("vct.grid-shift", &VctSettings::gridShift, -0.99f, 0.99f,
                   "move the voxel grid by this fraction of a voxel towards -x, -y, -z (every point's voxel "
                   "coordinates grow by it; voxel size and counts unchanged, the grid's padding voxel holds what "
@@ -30,6 +36,11 @@ const SettingsTable<VctSettings>& vctSettings() {
                      "extent (0 = one dense grid over the region)")
             .integer("vct.view.level", &VctSettings::viewLevel, 0, 16, "mip level shown by voxel_* AOVs")
             .check([](const VctSettings& s) {
+                if (s.fitReach == "lanes" && (s.region == "scene" || s.clipmapLevels > 0))
+                    throw UsageError("--param vct.fit-reach=lanes: it sets how far a fitted region reaches, and " +
+                                     std::string(s.clipmapLevels > 0 ? "a clipmap's levels cover the scene"
+                                                                     : "vct.region=scene fits none") +
+                                     "; use vct.region=fit or auto");
                 if (s.gridShift != 0.f && s.clipmapLevels > 0)
                     throw UsageError("--param vct.grid-shift: a clipmap's lattice is the scene's, moved with the "
                                      "camera; it needs one dense grid (vct.clipmap.levels=0)");

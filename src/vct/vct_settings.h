@@ -16,6 +16,10 @@ struct VctSettings {
     // The grid's shape over the region: fit (each axis as long as the region needs) or cube
     // (every axis as long as the longest, the region centred). See vct/voxel_region.h.
     std::string grid = "fit";
+    // How far a fit reaches past the visible points beyond R: the cone set's footprint radius at
+    // R (cones) or that of the lanes the march traces, at its level bias (lanes).
+    // See vct/voxel_region.cpp, chooseRegionBounds.
+    std::string fitReach = "cones";
     // The grid moved by this fraction of a voxel on every axis (voxel_region.h, shiftedGridRegion):
     // the same region on another alignment of the voxel lattice.
     float gridShift = 0.f;

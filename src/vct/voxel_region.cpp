@@ -1,5 +1,6 @@
 #include "vct/voxel_region.h"
 
+#include "cone/cone_set.h"
 #include "gl/readback.h"
 #include "vct/vct_passes.h"
 #include "vct/vct_settings.h"
@@ -29,7 +30,8 @@ std::string voxelRegionExplanation(const RenderRequest& r) {
     const std::string mode = voxelRegionMode(r);
     const bool explicitMode = r.params.has("vct.region") && r.params.values().at("vct.region") != "auto";
     if (mode == "fit")
-        s << "region fit to the visible points grown by R = " << r.radius << " + cone footprint"
+        s << "region fit to the visible points grown by R = " << r.radius
+          << (vctSettings().read(r.params).fitReach == "lanes" ? " + the lanes' footprint" : " + cone footprint")
           << (r.gi == kVctMethodName ? " (vct.region=fit: GI cones see only that)" : " (AO only: nothing farther occludes)");
     else
         s << "region = scene bounds"
@@ -98,7 +100,7 @@ nlohmann::json VoxelRegion::toJson() const {
 namespace {
 
 VoxelRegion chooseRegionBounds(const RenderRequest& r, const Scene& scene, const GBuffer* gbuffer,
-                               float apertureDeg, float offsetVoxels) {
+                               const ConeSettings& cone) {
     VoxelRegion region;
     region.mode = voxelRegionMode(r);
     region.bounds = scene.bounds;
@@ -119,13 +121,21 @@ VoxelRegion chooseRegionBounds(const RenderRequest& r, const Scene& scene, const
         region.why = "no visible surface (all sky): nothing to fit";
         return region;
     }
-    // R and the footprint's radius there; the start offset and one voxel of trilinear support.
-    const float reach = r.radius * (1.f + std::tan(0.5f * apertureDeg * 3.14159265f / 180.f));
-    region.bounds = fitAoRegion(region.visible, scene.bounds, reach, offsetVoxels + 1.f, r.voxelRes);
+    // R and the footprint's radius there; then the start offset and one voxel of trilinear
+    // support. The footprint is the cone set's (vct.fit-reach=cones), or that of the lanes the
+    // march traces at its level bias (lanes: narrower lanes, so the same voxels cover less
+    // space); those of a grid whose longest axis has r.voxelRes voxels, as every fitted or
+    // cubic grid's has.
+    const bool laneReach = vctSettings().read(r.params).fitReach == "lanes";
+    const float tangent = laneReach ? coneFootprintTangent(cone, coneMarchLanes(cone, r.voxelRes).apertureDeg)
+                                    : std::tan(0.5f * cone.apertureDeg * 3.14159265f / 180.f);
+    const float reach = r.radius * (1.f + tangent);
+    region.bounds = fitAoRegion(region.visible, scene.bounds, reach, cone.offsetVoxels + 1.f, r.voxelRes);
     region.followsView = region.bounds.min != scene.bounds.min || region.bounds.max != scene.bounds.max;
     std::ostringstream why;
     why << "visible points grown by the cone reach " << reach << " (R = " << r.radius << ") + "
-        << offsetVoxels + 1.f << " voxels, clipped to the scene";
+        << cone.offsetVoxels + 1.f << " voxels, clipped to the scene";
+    if (laneReach) why << " (vct.fit-reach=lanes: the lanes' footprint at R)";
     if (r.gi == kVctMethodName) why << " (vct.region=fit with GI: light from outside is lost)";
     region.why = why.str();
     return region;
@@ -144,8 +154,8 @@ Bounds3 shiftedGridRegion(const Bounds3& b, float shiftVoxels, int voxelRes) {
 }
 
 VoxelRegion chooseVoxelRegion(const RenderRequest& r, const Scene& scene, const GBuffer* gbuffer,
-                              float apertureDeg, float offsetVoxels) {
-    VoxelRegion region = chooseRegionBounds(r, scene, gbuffer, apertureDeg, offsetVoxels);
+                              const ConeSettings& cone) {
+    VoxelRegion region = chooseRegionBounds(r, scene, gbuffer, cone);
     const VctSettings vs = vctSettings().read(r.params);
     if (vs.grid == "cube") {
         region.bounds = cubeAround(region.bounds);

@@ -23,6 +23,7 @@
 #include "image/image.h"
 #include "core/gbuffer.h"
 #include "core/request.h"
+#include "cone/cone_settings.h"
 #include "scene/scene.h"
 
 #include <nlohmann/json.hpp>
@@ -69,8 +70,9 @@ struct VoxelRegion {
 };
 
 // The region of this request. `gbuffer` may be null (no G-buffer in the plan): then the scene.
-// apertureDeg and offsetVoxels are the cones' (ConeSettings).
+// A fit grows the visible points by R plus a footprint's radius at R (the cone set's, or with
+// vct.fit-reach=lanes that of the lanes `cone` marches), and by its start offset.
 VoxelRegion chooseVoxelRegion(const RenderRequest& request, const Scene& scene, const GBuffer* gbuffer,
-                              float apertureDeg, float offsetVoxels);
+                              const ConeSettings& cone);
 
 }  // namespace vct

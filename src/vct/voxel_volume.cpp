@@ -104,7 +104,7 @@ VoxelVolume voxelVolumeFor(MethodContext& ctx, const ConeSettings& cone, VoxelVo
     const RenderRequest& r = ctx.request;
     const bool inject = ctx.plan.runs(kPassInject);
     const int levels = clipmapLevelCount(r);
-    const VoxelRegion region = chooseVoxelRegion(r, ctx.scene, ctx.gbuffer, cone.apertureDeg, cone.offsetVoxels);
+    const VoxelRegion region = chooseVoxelRegion(r, ctx.scene, ctx.gbuffer, cone);
     // Clipmaps keep isotropic mips only (clipmap/clipmap.h).
     const bool aniso = levels == 0 && cone.anisotropic;
     if (levels > 0 && cone.opacity == ConeOpacity::Depth)

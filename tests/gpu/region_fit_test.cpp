@@ -14,6 +14,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <cstdio>
 #include <cstdlib>
 
@@ -163,4 +165,53 @@ TEST(RegionFit, FullyVisibleSmallSceneMatchesTheWholeSceneGrid) {
     EXPECT_EQ(b.extra["voxels"]["region"]["mode"], "fit");
     EXPECT_LT(m.mae, 0.01);
     EXPECT_LT(m.maxAbs, 0.1);
+}
+
+// The fit grows the visible points by R plus a footprint's radius at R, and by the start
+// offset and one voxel. By default the footprint is the cone set's: 6 cones of 60 deg reach
+// R (1 + tan 30 deg), whatever lanes march them. vct.fit-reach=lanes takes the lanes' own:
+// split into lanes (vct.lanes=0: (64 / 32)^2 = 4 lanes a cone at 64^3, each a quarter of the
+// cone's cap, half-angle acos(1 - (1 - cos 30 deg) / 4)) sampled at half the footprint's level
+// (vct.level-bias=-1), they reach R (1 + tan(that) / 2), so the same voxels cover less space.
+TEST(RegionFit, TheFitReachesAsFarAsTheFootprintItIsToldTo) {
+    const Scene scene = tableScene();
+    RenderRequest r = tableRequest();
+    r.ao = "vct";
+    r.aovs = {"ao"};
+    const double pi = 3.14159265358979;
+    const double coneHalf = 30.0 * pi / 180.0, laneHalf = std::acos(1.0 - (1.0 - std::cos(coneHalf)) / 4.0);
+    struct Variant {
+        std::map<std::string, std::string> params;
+        double tangent;
+    };
+    const Variant variants[] = {
+        {{}, std::tan(coneHalf)},
+        {{{"vct.lanes", "0"}, {"vct.level-bias", "-1"}}, std::tan(coneHalf)},
+        {{{"vct.lanes", "0"}, {"vct.level-bias", "-1"}, {"vct.fit-reach", "lanes"}}, 0.5 * std::tan(laneHalf)}};
+    double grows[3] = {0, 0, 0};
+    for (int i = 0; i < 3; ++i) {
+        RenderRequest v = r;
+        for (const auto& [k, val] : variants[i].params) v.params.set(k, val);
+        RenderSession session(scene);
+        RenderResult res = session.render(v);
+        GlContext::shared().checkErrors("region_reach");
+        const nlohmann::json& region = res.extra["voxels"]["region"];
+        ASSERT_EQ(region["mode"], "fit");
+        double extent = 0;
+        for (int a = 0; a < 3; ++a)
+            extent = std::max(extent, region["visible"]["max"][a].get<double>() - region["visible"]["min"][a].get<double>());
+        // Voxel = (visible extent + 2 reach) / (res - 2 - 2 margin) with margin = offset + 1 = 2.5.
+        const double reach = r.radius * (1.0 + variants[i].tangent), margin = 2.5;
+        const double voxel = (extent + 2.0 * reach) / (double(r.voxelRes) - 2.0 - 2.0 * margin);
+        // The floor is 40 m wide: x is not clipped to the scene on either side.
+        const double growMax = region["max"][0].get<double>() - region["visible"]["max"][0].get<double>();
+        const double growMin = region["visible"]["min"][0].get<double>() - region["min"][0].get<double>();
+        std::printf("variant %d: reach %.4f, grown by %.4f / %.4f (expected %.4f)\n", i, reach, growMin, growMax,
+                    reach + margin * voxel);
+        EXPECT_NEAR(growMax, reach + margin * voxel, 1e-4);
+        EXPECT_NEAR(growMin, reach + margin * voxel, 1e-4);
+        grows[i] = growMax;
+        if (i == 2) EXPECT_NE(describePlan(res.plan).find("the lanes' footprint"), std::string::npos);
+    }
+    EXPECT_LT(grows[2], 0.8 * grows[1]);
 }

@@ -429,3 +429,24 @@ TEST(VctConvergence, TexelsOfTheFootprintsRadiusCloseTheSmallRoom) {
 TEST(VctConvergence, SparseLevelBiasMatchesTheDense) {
     expectBackendsAgree(params({"vct.lanes=0", "vct.grid=cube", "vct.sharpen=4", "vct.aim=1", "vct.level-bias=-1"}));
 }
+
+// vct.fit-reach=lanes: a fitted grid reaches R plus the footprint at R of the lanes the march
+// traces rather than of their cones, so at the same resolution its voxels are finer (at 64^3
+// with 6 cones in lanes of base 16 at half the footprint's level, reach 1.07 R instead of
+// 1.58 R: voxels about a fifth smaller). Over the open off-screen families the mean voxel error
+// falls with them (measured 0.077 -> 0.048 at 64^3); a grid that misses something a lane samples
+// within R would show as an error that grows instead.
+TEST(VctConvergence, TheLanesOwnReachSpendsTheVoxelsOnLessSpace) {
+    const ParamMap cones = params({"vct.lanes=0", "vct.lanes-base=16", "vct.grid=cube", "vct.sharpen=4", "vct.aim=1",
+                                   "vct.level-bias=-1"});
+    ParamMap lanes = cones;
+    lanes.set("vct.fit-reach=lanes");
+    const double before = mean(voxelErrors({64}, "vdb", cones), 64), after = mean(voxelErrors({64}, "vdb", lanes), 64);
+    std::printf("mean voxel error at 64^3: reach of the cones %.4f, of the lanes %.4f\n", before, after);
+    EXPECT_LT(after, 0.8 * before);
+}
+
+TEST(VctConvergence, SparseLanesReachMatchesTheDense) {
+    expectBackendsAgree(params({"vct.lanes=0", "vct.grid=cube", "vct.sharpen=4", "vct.aim=1", "vct.level-bias=-1",
+                                "vct.fit-reach=lanes"}));
+}
