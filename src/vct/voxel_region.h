@@ -6,7 +6,9 @@
 // scene bounds, and --voxel-res is spent there. The reach is R plus the radius of a cone's
 // footprint at distance R (R tan(aperture / 2): the cones see that far sideways, and cropping
 // it changed the estimate - the off-screen overhang's ROI error rose from 0.14 to 0.23 with
-// R alone) plus the start offset and one voxel of trilinear support.
+// R alone) plus the start offset and one voxel of trilinear support. Marched as lanes
+// (vct.lanes), each cone is many narrower ones: vct.fit-reach=lanes takes their footprint at
+// R, at the level bias (vct.level-bias), instead, so the voxels cover only what a lane samples.
 // GI needs the whole scene (light travels far), so `auto` keeps the scene for --gi vct; an
 // explicit vct.region=fit with GI crops what the cones can gather light from.
 //
@@ -17,7 +19,7 @@
 // reaching from the floor to an occluder on the grid's top face. `cube` grows the region to a
 // cube around its centre, so every axis has the same count and every level cubic texels.
 //
-// Keys: vct.region, vct.grid and vct.clipmap.levels (vct/vct_settings.h).
+// Keys: vct.region, vct.fit-reach, vct.grid and vct.clipmap.levels (vct/vct_settings.h).
 #pragma once
 
 #include "image/image.h"
