@@ -175,8 +175,10 @@ const SettingsTable<ConeSettings>& coneSettings() {
     return table;
 }
 
+float coneTanHalfAperture(float apertureDeg) { return std::tan(0.5f * apertureDeg * float(M_PI) / 180.f); }
+
 float coneFootprintTangent(const ConeSettings& s, float apertureDeg) {
-    return std::tan(0.5f * apertureDeg * float(M_PI) / 180.f) * std::exp2(s.levelBias);
+    return coneTanHalfAperture(apertureDeg) * std::exp2(s.levelBias);
 }
 
 ConeSettings readConeSettings(const ParamMap& params) {

@@ -65,8 +65,11 @@ ConeSettings readConeSettings(const ParamMap& params);  // coneSettings().read(p
 // ConeSettings::seed from a render's 64-bit seed (both halves folded in).
 inline uint32_t coneJitterSeed(uint64_t seed) { return uint32_t(seed) ^ uint32_t(seed >> 32); }
 
+// tan(aperture / 2) of a cone of full aperture `apertureDeg`, degrees: its footprint's radius at
+// distance 1.
+float coneTanHalfAperture(float apertureDeg);
 // ConeMarch::tanHalfAperture of a march whose cones (or lanes) have the full aperture
-// `apertureDeg` (ConeLanes::apertureDeg): tan(aperture / 2) 2^(vct.level-bias), so the
+// `apertureDeg` (ConeLanes::apertureDeg): coneTanHalfAperture 2^(vct.level-bias), so the
 // footprint's level carries the bias (times exactly 1 at the default 0).
 float coneFootprintTangent(const ConeSettings& s, float apertureDeg);
 

@@ -99,8 +99,8 @@ nlohmann::json VoxelRegion::toJson() const {
 
 namespace {
 
-VoxelRegion chooseRegionBounds(const RenderRequest& r, const Scene& scene, const GBuffer* gbuffer,
-                               const ConeSettings& cone) {
+VoxelRegion chooseRegionBounds(const RenderRequest& r, const VctSettings& vs, const Scene& scene,
+                               const GBuffer* gbuffer, const ConeSettings& cone) {
     VoxelRegion region;
     region.mode = voxelRegionMode(r);
     region.bounds = scene.bounds;
@@ -126,9 +126,9 @@ VoxelRegion chooseRegionBounds(const RenderRequest& r, const Scene& scene, const
     // march traces at its level bias (lanes: narrower lanes, so the same voxels cover less
     // space); those of a grid whose longest axis has r.voxelRes voxels, as every fitted or
     // cubic grid's has.
-    const bool laneReach = vctSettings().read(r.params).fitReach == "lanes";
+    const bool laneReach = vs.fitReach == "lanes";
     const float tangent = laneReach ? coneFootprintTangent(cone, coneMarchLanes(cone, r.voxelRes).apertureDeg)
-                                    : std::tan(0.5f * cone.apertureDeg * 3.14159265f / 180.f);
+                                    : coneTanHalfAperture(cone.apertureDeg);
     const float reach = r.radius * (1.f + tangent);
     region.bounds = fitAoRegion(region.visible, scene.bounds, reach, cone.offsetVoxels + 1.f, r.voxelRes);
     region.followsView = region.bounds.min != scene.bounds.min || region.bounds.max != scene.bounds.max;
@@ -155,8 +155,8 @@ Bounds3 shiftedGridRegion(const Bounds3& b, float shiftVoxels, int voxelRes) {
 
 VoxelRegion chooseVoxelRegion(const RenderRequest& r, const Scene& scene, const GBuffer* gbuffer,
                               const ConeSettings& cone) {
-    VoxelRegion region = chooseRegionBounds(r, scene, gbuffer, cone);
     const VctSettings vs = vctSettings().read(r.params);
+    VoxelRegion region = chooseRegionBounds(r, vs, scene, gbuffer, cone);
     if (vs.grid == "cube") {
         region.bounds = cubeAround(region.bounds);
         region.why += "; padded to a cube around its centre (vct.grid=cube)";
