@@ -27,11 +27,12 @@ int clipmapLevelCount(const RenderRequest& r) {
 
 std::string voxelRegionExplanation(const RenderRequest& r) {
     std::ostringstream s;
+    const VctSettings vs = vctSettings().read(r.params);
     const std::string mode = voxelRegionMode(r);
     const bool explicitMode = r.params.has("vct.region") && r.params.values().at("vct.region") != "auto";
     if (mode == "fit")
         s << "region fit to the visible points grown by R = " << r.radius
-          << (vctSettings().read(r.params).fitReach == "lanes" ? " + the lanes' footprint" : " + cone footprint")
+          << (vs.fitReach == "lanes" ? " + the lanes' footprint" : " + cone footprint")
           << (r.gi == kVctMethodName ? " (vct.region=fit: GI cones see only that)" : " (AO only: nothing farther occludes)");
     else
         s << "region = scene bounds"
@@ -44,7 +45,6 @@ std::string voxelRegionExplanation(const RenderRequest& r) {
         s << "; " << levels << " clipmap levels of " << r.voxelRes << "^3 around the camera (isotropic mips)";
     else
         s << "; one dense grid of " << r.voxelRes << " voxels along its longest axis";
-    const VctSettings vs = vctSettings().read(r.params);
     if (vs.grid == "cube") s << ", padded to a cube (vct.grid=cube)";
     if (vs.gridShift != 0.f) s << ", moved by " << vs.gridShift << " voxel (vct.grid-shift)";
     return s.str();
