@@ -69,7 +69,8 @@ results: build
 # in lanes and the schedule to 512^3, trilinear and with vct.sharpen=4; 6 and 32 cones in lanes
 # and the schedule sharpened, parallel and aimed (vct.aim); 6 cones in lanes at the level bias,
 # with the lanes' own region reach, on one alignment and pooled over five, and the schedule
-# with them at 6 / 16 / 32 cones, on one alignment and pooled; AO, then
+# with them at 6 / 16 / 32 cones, on one alignment and pooled, with the caps below the plane
+# counted open and mirrored; AO, then
 # GI on the emitting families) and the Cornell box's per-surface GI table.
 convergence: build
 	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend gl --markdown docs/convergence_gl.md
@@ -124,6 +125,14 @@ convergence: build
 		--param vct.grid=cube --param vct.sharpen=4 --param vct.aim=1 --param vct.fit-reach=lanes --param vct.level-bias=-2 \
 		--cases ' off' --grid-shifts -0.5,-0.25,0,0.25,0.5 \
 		--markdown docs/convergence_schedule_vdb_lanes16_sharpen_aim_bias2_reach_shifts.md
+	./$(BUILD)/bench_convergence --schedule 64:6,128:16,256:32 --backend vdb --param vct.lanes=0 --param vct.lanes-base=16 \
+		--param vct.grid=cube --param vct.sharpen=4 --param vct.aim=1 --param vct.level-bias=-2 --param vct.fit-reach=lanes \
+		--param vct.below-plane=mirror --cases ' off' \
+		--markdown docs/convergence_schedule_vdb_lanes16_sharpen_aim_bias2_reach_mirror.md
+	./$(BUILD)/bench_convergence --schedule 64:6,128:16,256:32 --backend vdb --param vct.lanes=0 --param vct.lanes-base=16 \
+		--param vct.grid=cube --param vct.sharpen=4 --param vct.aim=1 --param vct.level-bias=-2 --param vct.fit-reach=lanes \
+		--param vct.below-plane=mirror --cases ' off' --grid-shifts -0.5,-0.25,0,0.25,0.5 \
+		--markdown docs/convergence_schedule_vdb_lanes16_sharpen_aim_bias2_reach_mirror_shifts.md
 	./$(BUILD)/bench_convergence --res 128,256,512 --backend vdb --param vct.cones=32 --param vct.lanes=31 \
 		--param vct.grid=cube --param vct.sharpen=4 --param vct.aim=1 --markdown docs/convergence_vdb_lanes32_sharpen_aim.md
 	./$(BUILD)/bench_convergence --schedule 64:6,128:16,256:64:64,512:64:64 --backend vdb --param vct.grid=cube \

@@ -118,11 +118,14 @@ ConeGather cone_gatherVoxel(ConeGather g, vec3 p, vec3 n, vec3 ng, float offset,
             continue;
         }
         if (state == CONE_LANE_OPEN) {
-            g.radiance += cone.w * sky;
-            continue;
+            if ((u.lanes.z & CONE_LANES_MIRROR) == 0) {
+                g.radiance += cone.w * sky;
+                continue;
+            }
+            d = cone_mirrored(d, ng);  // vct.below-plane=mirror
         }
         // vct.aim: towards the point the lane's ray from p reaches at maxDist.
-        vec3 marched = u.lanes.z != 0 ? cone_aimedDirection(d, ng, offset, maxDist) : d;
+        vec3 marched = (u.lanes.z & CONE_LANES_AIM) != 0 ? cone_aimedDirection(d, ng, offset, maxDist) : d;
         ConeResult r = cone_marchVolume(m, origin, marched, h0, dot(marched, ng), maxDist, falloff);
         g.radiance += cone.w * (r.radiance + (1.0 - r.alpha) * sky);
         g.occlusion += cone.w * r.alpha;

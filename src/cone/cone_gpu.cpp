@@ -61,7 +61,10 @@ gpu::ConeUniforms coneUniforms(bool gi, const VoxelGrid& grid, float maxDistWorl
     const size_t first = std::min(lanes.cones.size(), size_t(gpu::CONE_BLOCK_CONES));
     u.config = glm::ivec4(int(first), gi ? gpu::CONE_AO_LINEAR : int(settings.aoMapping), 0, 0);
     for (size_t i = 0; i < first; ++i) u.cones[i] = lanes.cones[i];
-    u.lanes = glm::ivec4(lanes.lanesPerCone, 0, settings.aim ? 1 : 0, settings.endTaper ? 1 : 0);
+    u.lanes = glm::ivec4(lanes.lanesPerCone, 0,
+                         (settings.aim ? gpu::CONE_LANES_AIM : 0) |
+                             (settings.belowPlane == ConeBelowPlane::Mirror ? gpu::CONE_LANES_MIRROR : 0),
+                         settings.endTaper ? 1 : 0);
     for (size_t i = 0; i < lanes.axes.size(); ++i) u.coneAxes[i] = lanes.axes[i];
     u.trace = glm::ivec4(settings.traceScale, gpu::CONE_STAGE_TRACE, 0, 0);
     u.camera.w = settings.sharpen;

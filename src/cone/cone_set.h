@@ -34,8 +34,9 @@ std::vector<glm::vec4> diffuseConeSet(int coneCount);
 //
 // A lane below the surface's geometric plane is open when its cone's axis is above it: the
 // part of a cone below the plane is open (a cone never sees the surface it starts from, and
-// the cone model, reference/cone_model.h, counts those directions open), and a cone whose
-// axis is below the plane is closed, every lane of it. The lanes of cone c are
+// the cone model, reference/cone_model.h, counts those directions open), or with
+// vct.below-plane=mirror marched reflected above the plane (the cone model reflects them too),
+// and a cone whose axis is below the plane is closed, every lane of it. The lanes of cone c are
 // cones[c * lanesPerCone, (c + 1) * lanesPerCone), so a march finds a lane's cone by index.
 struct ConeLanes {
     std::vector<glm::vec4> cones;  // xyz = direction (tangent frame), w = weight; sum of w = 1

@@ -3,7 +3,7 @@
 //
 // Keys, defaults, ranges and docs: coneSettings() (vct.cones, vct.aperture, vct.step,
 // vct.offset, vct.max-alpha, vct.aniso, vct.ao-mapping, vct.plane-limit, vct.lanes, vct.jitter,
-// vct.opacity, vct.trace-scale, vct.dispatch-cones).
+// vct.opacity, vct.trace-scale, vct.dispatch-cones, vct.below-plane and the march's others).
 //
 // AO mappings: `linear` A = 1 - sum_c w_c alpha_c, where alpha_c is cone c's opacity
 // accumulated within R; with cosine-lobe weights w_c this estimates A_R, the cosine-weighted
@@ -27,6 +27,10 @@ enum class ConeAoMapping { Linear, Falloff };
 // (shaders/voxelize/opacity_depth.h), whose trilinear filter along a ray passes exactly a
 // texel's own transmittance (a one-texel wall crossed under opacity filtering passes ~13%).
 enum class ConeOpacity { Alpha, Depth };
+// What the part of a cone's cap below the geometric plane stands for (vct.below-plane): open, as
+// the sky (a cone never sees the surface it starts from), or the same directions reflected
+// above the plane (cone_mirrored), so that the set's weight stays on the hemisphere.
+enum class ConeBelowPlane { Open, Mirror };
 
 struct ConeSettings {
     int coneCount = gpu::CONE_DEFAULT_COUNT;
@@ -47,6 +51,7 @@ struct ConeSettings {
     bool aim = false;               // vct.aim: march each cone towards its ray's point at the max distance
     bool endTaper = false;          // vct.end-taper: finer levels near the max distance (ConeMarch::endRatio)
     float levelBias = gpu::CONE_DEFAULT_LEVEL_BIAS;  // vct.level-bias: level log2(footprint) + b
+    ConeBelowPlane belowPlane = ConeBelowPlane::Open;  // vct.below-plane: a cap's part below the plane
     uint32_t seed = 0;              // the render's seed, for the jitter: set by the caller, not a --param
 
     // Throws InternalError naming the field if a value is outside its range.

@@ -1,6 +1,7 @@
 #include "eval/analytic_ao.h"
 
 #include "common/tangent_frame.h"
+#include "cone/cone_shared.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
@@ -95,7 +96,8 @@ double analyticAo(const AnalyticOccluders& occ, const glm::vec3& p, const glm::v
 }
 
 double analyticConeModelAo(const AnalyticOccluders& occ, const glm::vec3& p, const glm::vec3& n, float radius,
-                           const std::vector<glm::vec4>& cones, float apertureDeg, int samplesPerAxis) {
+                           const std::vector<glm::vec4>& cones, float apertureDeg, int samplesPerAxis,
+                           bool mirrorBelowPlane) {
     const glm::mat3 frame = gpu::frame_fromZ(n);
     const double cosHalf = std::cos(0.5 * apertureDeg * M_PI / 180.0);
     double ao = 0.0;
@@ -104,7 +106,8 @@ double analyticConeModelAo(const AnalyticOccluders& occ, const glm::vec3& p, con
         if (glm::dot(axis, n) <= 0.f) continue;  // closed, as the cone passes close it
         const glm::mat3 coneFrame = gpu::frame_fromZ(axis);
         // Uniform in solid angle: cos(theta) uniform in [cos(half aperture), 1]. Directions
-        // below the plane are open, as for the cone passes, which never see their own surface.
+        // below the plane are open, as for the cone passes, which never see their own surface,
+        // or reflected above it (vct.below-plane=mirror, as the passes march their lanes).
         double visible = 0.0;
         const int m = samplesPerAxis;
         for (int i = 0; i < m; ++i)
@@ -113,7 +116,8 @@ double analyticConeModelAo(const AnalyticOccluders& occ, const glm::vec3& p, con
                 const double sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT)), phi = 2.0 * M_PI * (j + 0.5) / m;
                 const glm::vec3 d = coneFrame * glm::vec3(float(sinT * std::cos(phi)), float(sinT * std::sin(phi)),
                                                           float(cosT));
-                if (glm::dot(d, n) <= 0.f || !occ.occludes(p, d, radius)) visible += 1.0;
+                if (glm::dot(d, n) <= 0.f && !mirrorBelowPlane) visible += 1.0;
+                else if (!occ.occludes(p, gpu::cone_mirrored(d, n), radius)) visible += 1.0;
             }
         ao += cone.w * visible / (double(m) * m);
     }

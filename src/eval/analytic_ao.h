@@ -53,9 +53,11 @@ double analyticAo(const AnalyticOccluders& occluders, const glm::vec3& p, const 
                   int samplesPerAxis = kAnalyticHemisphereSamples);
 
 // `cones`: xyz = direction in the tangent frame of n (frame_fromZ, z = n), w = weight, as
-// cone/cone_set.h gives them; `apertureDeg` the full apex angle.
+// cone/cone_set.h gives them; `apertureDeg` the full apex angle. A cap's directions below the
+// plane of n count open, or with `mirrorBelowPlane` (vct.below-plane=mirror) are reflected
+// above it (cone_mirrored) and tested there.
 double analyticConeModelAo(const AnalyticOccluders& occluders, const glm::vec3& p, const glm::vec3& n, float radius,
                            const std::vector<glm::vec4>& cones, float apertureDeg,
-                           int samplesPerAxis = kAnalyticConeSamples);
+                           int samplesPerAxis = kAnalyticConeSamples, bool mirrorBelowPlane = false);
 
 }  // namespace vct

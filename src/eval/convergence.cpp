@@ -237,7 +237,8 @@ std::vector<double> coneModelAo(const AoConvergenceCase& c, const ParamMap& para
     const std::vector<glm::vec4> set = diffuseConeSet(cone.coneCount);
     std::vector<double> out;
     for (const glm::vec3& p : c.points)
-        out.push_back(analyticConeModelAo(c.occluders, p, glm::vec3(0, 1, 0), radius, set, cone.apertureDeg));
+        out.push_back(analyticConeModelAo(c.occluders, p, glm::vec3(0, 1, 0), radius, set, cone.apertureDeg,
+                                          kAnalyticConeSamples, cone.belowPlane == ConeBelowPlane::Mirror));
     return out;
 }
 
@@ -340,13 +341,19 @@ AoLaneTrace vctAoLanesAt(const AoConvergenceCase& c, int voxelRes, const ParamMa
         for (const SparseLane& lane : marched.lanes) trace.lanes.push_back({lane, 0.0, 0.f});
     });
     const glm::vec3 p = c.points[point], n = c.shadingNormal;
+    const bool mirror = cone.belowPlane == ConeBelowPlane::Mirror;
+    const std::vector<glm::vec4> axes = diffuseConeSet(cone.coneCount);
     for (AoLaneRecord& r : trace.lanes) {
         r.rayHit = c.occluders.firstHit(p, r.lane.direction, 4.f * c.radius);
+        // A lane below the plane of a cone above it is open, or with vct.below-plane=mirror
+        // marched reflected above the plane (its record's direction is the reflected one).
+        const bool reflected = mirror && r.lane.tangent.z <= 0.f && axes[size_t(r.lane.cone)].z > 0.f;
+        const glm::vec3 tangent =
+            reflected ? glm::vec3(r.lane.tangent.x, r.lane.tangent.y, -r.lane.tangent.z) : r.lane.tangent;
         r.exactOcclusion =
-            r.lane.tangent.z > 0.f
-                ? 1.0 - analyticConeModelAo(c.occluders, p, n, c.radius, {glm::vec4(r.lane.tangent, 1.f)},
-                                            trace.laneApertureDeg)
-                : double(r.lane.alpha);
+            tangent.z > 0.f ? 1.0 - analyticConeModelAo(c.occluders, p, n, c.radius, {glm::vec4(tangent, 1.f)},
+                                                        trace.laneApertureDeg, kAnalyticConeSamples, mirror)
+                            : double(r.lane.alpha);
     }
     return trace;
 }

@@ -78,7 +78,8 @@ struct AoLaneRecord {
     SparseLane lane;
     // The occluded fraction of the lane's own cone (its axis and the lanes' aperture, cut at R;
     // analyticConeModelAo): what the lane converges to. A lane below the surface's plane is decided
-    // by the plane (cone_laneState) and carries VCT's value.
+    // by the plane (cone_laneState) and carries VCT's value, or with vct.below-plane=mirror is
+    // scored as the reflected lane it is marched as.
     double exactOcclusion = 0.0;
     // Where the lane's ray from the point meets an occluder (world units; infinity when not
     // within 4 R).

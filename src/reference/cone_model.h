@@ -4,13 +4,15 @@
 // angle within R. Its Monte Carlo estimate picks cone c with probability w_c and a direction
 // uniform in its cap: the fraction of such rays left open is A_cones. As the cone passes do,
 // a cone whose axis lies below the geometric plane is closed, and the part of a cone below
-// the plane is open (the cones never see the surface they start from).
+// the plane is open (the cones never see the surface they start from), or with
+// vct.below-plane=mirror reflected above the plane (cone_mirrored), as the passes march it.
 // GI's cone model replaces the cosine lobe of a diffuse reflection by the same sampling:
 // L_gathered = sum_c w_c (mean of L_in over cone c's cap), what the cone passes' sum_c w_c L_c
 // converges to; an open direction below the plane sees the sky, a closed cone gathers nothing.
 #pragma once
 
 #include "common/tangent_frame.h"
+#include "cone/cone_shared.h"
 
 #include <glm/glm.hpp>
 
@@ -28,8 +30,9 @@ struct ConeModelSample {
 class ConeModelSampler {
 public:
     ConeModelSampler() = default;
-    ConeModelSampler(std::vector<glm::vec4> cones, float apertureDeg)
-        : mCones(std::move(cones)), mCosHalf(std::cos(0.5f * apertureDeg * 3.14159265358979f / 180.f)) {
+    ConeModelSampler(std::vector<glm::vec4> cones, float apertureDeg, bool mirrorBelowPlane = false)
+        : mCones(std::move(cones)), mCosHalf(std::cos(0.5f * apertureDeg * 3.14159265358979f / 180.f)),
+          mMirror(mirrorBelowPlane) {
         float sum = 0.f;
         for (const glm::vec4& c : mCones) mCdf.push_back(sum += c.w);
         for (float& v : mCdf) v /= sum;
@@ -61,13 +64,18 @@ public:
         const float phi = 2.f * 3.14159265358979f * u.y;
         s.direction = gpu::frame_fromZ(axis) * glm::vec3(sinT * std::cos(phi), sinT * std::sin(phi), cosT);
         s.belowPlane = glm::dot(s.direction, ng) <= 0.f;
+        if (s.belowPlane && mMirror) {
+            s.direction = gpu::cone_mirrored(s.direction, ng);
+            s.belowPlane = false;
+        }
         return s;
     }
 
     // The density over directions of sample()'s open, above-plane directions: the sum over the
-    // open cones whose cap holds w of w_c / (the cap's solid angle), weights normalised as
-    // sample() picks them. GI's cone model uses it as both the lobe and its pdf (for MIS
-    // against emitter sampling); 0 below the plane and outside every open cap.
+    // open cones whose cap holds w (mirrored: or its reflection below the plane) of w_c / (the
+    // cap's solid angle), weights normalised as sample() picks them. GI's cone model uses it as
+    // both the lobe and its pdf (for MIS against emitter sampling); 0 below the plane and
+    // outside every open cap.
     float density(const glm::vec3& w, const glm::vec3& n, const glm::vec3& ng, float rotation = 0.f) const {
         if (mCones.empty() || glm::dot(w, ng) <= 0.f) return 0.f;
         const glm::mat3 frame = frameOf(n, rotation);
@@ -75,8 +83,10 @@ public:
         float sum = 0.f;
         for (size_t c = 0; c < mCones.size(); ++c) {
             const glm::vec3 axis = glm::normalize(frame * glm::vec3(mCones[c]));
-            if (glm::dot(axis, ng) <= 0.f || glm::dot(w, axis) < mCosHalf) continue;
-            sum += mCdf[c] - (c == 0 ? 0.f : mCdf[c - 1]);
+            if (glm::dot(axis, ng) <= 0.f) continue;
+            const float share = mCdf[c] - (c == 0 ? 0.f : mCdf[c - 1]);
+            if (glm::dot(w, axis) >= mCosHalf) sum += share;
+            if (mMirror && glm::dot(w - 2.f * glm::dot(w, ng) * ng, axis) >= mCosHalf) sum += share;
         }
         return sum / capSolidAngle;
     }
@@ -96,6 +106,7 @@ private:
     std::vector<float> mCdf;
     std::vector<float> mRotations;
     float mCosHalf = 1.f;
+    bool mMirror = false;  // vct.below-plane=mirror
 };
 
 }  // namespace vct

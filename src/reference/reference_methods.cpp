@@ -34,13 +34,13 @@ std::vector<SurfacePoint> surfacePoints(const GBuffer& g) {
     return pts;
 }
 
-// The cone model of the request's cone set (vct.cones, vct.aperture, vct.jitter) for a w x h
-// image, or an empty sampler when reference.cone-model is off.
+// The cone model of the request's cone set (vct.cones, vct.aperture, vct.jitter,
+// vct.below-plane) for a w x h image, or an empty sampler when reference.cone-model is off.
 ConeModelSampler coneModelOf(const RenderRequest& request, const ReferenceSettings& settings, int w, int h) {
     ConeModelSampler cones;
     if (!settings.coneModel) return cones;
     const ConeSettings c = readConeSettings(request.params);
-    cones = ConeModelSampler(diffuseConeSet(c.coneCount), c.apertureDeg);
+    cones = ConeModelSampler(diffuseConeSet(c.coneCount), c.apertureDeg, c.belowPlane == ConeBelowPlane::Mirror);
     if (c.jitter) {
         // The images run top row first; the cone passes' pixels are GL's, bottom row 0.
         const uint32_t seed = coneJitterSeed(request.seed);

@@ -86,6 +86,8 @@ std::string coneExplanation(const RenderRequest& r) {
     }
     if (c.aim) s += ", aimed from their offset start at their rays' points at the maximum distance (vct.aim)";
     if (c.endTaper) s += ", on levels that reach no further than the maximum distance near its end (vct.end-taper)";
+    if (c.belowPlane == ConeBelowPlane::Mirror)
+        s += ", the caps' parts below the surface's plane reflected above it (vct.below-plane=mirror)";
     if (c.levelBias != gpu::CONE_DEFAULT_LEVEL_BIAS) {
         std::ostringstream bias;
         bias << ", sampling the level log2(footprint) " << (c.levelBias < 0.f ? "- " : "+ ") << std::abs(c.levelBias)

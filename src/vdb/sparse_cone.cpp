@@ -41,6 +41,7 @@ struct MarchParams {
     float laneApertureDeg = 0.f;        // each lane's full aperture (ConeLanes::apertureDeg)
     float sharpen = 1.f;                // vct.sharpen when the levels are directional, else 1
     bool aim = false;                   // vct.aim (gpu::cone_aimedDirection)
+    bool mirror = false;                // vct.below-plane=mirror (gpu::cone_mirrored)
 };
 
 // One thread's view of the levels: the volume of gpu::cone_marchVolume.
@@ -229,7 +230,7 @@ Gather gatherVoxel(LevelSampler& sampler, const glm::vec3& p,
     const MarchParams& mp = *sampler.mp;
     for (size_t c = 0; c < mp.cones.size(); ++c) {
         const glm::vec4& cone = mp.cones[c];
-        const glm::vec3 d = glm::normalize(frame * glm::vec3(cone));
+        glm::vec3 d = glm::normalize(frame * glm::vec3(cone));
         const float rise = glm::dot(d, ng);
         const float axisRise =
             mp.lanesPerCone > 1
@@ -246,9 +247,12 @@ Gather gatherVoxel(LevelSampler& sampler, const glm::vec3& p,
             continue;
         }
         if (state == gpu::CONE_LANE_OPEN) {
-            g.radiance += cone.w * sky;
-            record(0.f);
-            continue;
+            if (!mp.mirror) {
+                g.radiance += cone.w * sky;
+                record(0.f);
+                continue;
+            }
+            d = gpu::cone_mirrored(d, ng);  // vct.below-plane=mirror
         }
         // vct.aim: towards the point the lane's ray from p reaches at maxDist.
         const glm::vec3 marched = mp.aim ? gpu::cone_aimedDirection(d, ng, offset, maxDist) : d;
@@ -287,6 +291,7 @@ MarchParams marchParams(const SparseVoxelScene& v, const ConeSettings& s) {
     mp.offset = s.offsetVoxels;
     mp.sharpen = sharpensLevels(s) ? s.sharpen : 1.f;
     mp.aim = s.aim;
+    mp.mirror = s.belowPlane == ConeBelowPlane::Mirror;
     mp.maxLod = float(int(v.opacityLevels.size()) - 1);
     mp.res = glm::vec3(v.resolution);
     for (int k = 0; k < int(v.opacityLevels.size()); ++k)

@@ -159,7 +159,8 @@ TEST(RenderCli, ExplainPrintsRunAndSkippedPasses) {
     };
     // The directional levels sharpened; cones aimed at their rays' points at R; levels tapered
     // to what remains of R near its end; a footprint's level moved; how many lanes auto marches
-    // when its base resolution moves: (32 / 16)^2 at 32^3.
+    // when its base resolution moves: (32 / 16)^2 at 32^3; the caps' parts below the plane
+    // mirrored.
     explainCones("--voxel-res 16 --param vct.sharpen=4", "sharpened along their axis (vct.sharpen=4)", "(vct.aim)",
                  "s.png");
     explainCones("--voxel-res 16 --param vct.aim=1", "rays' points at the maximum distance (vct.aim)",
@@ -170,6 +171,8 @@ TEST(RenderCli, ExplainPrintsRunAndSkippedPasses) {
                  "sampling the level log2(footprint) - 1 (vct.level-bias=-1)", "(vct.end-taper)", "b.png");
     explainCones("--voxel-res 32 --param vct.lanes=0 --param vct.lanes-base=16",
                  "each marched as 4 lanes (vct.lanes=auto at 32^3 with vct.lanes-base=16)", "", "l.png");
+    explainCones("--voxel-res 16 --param vct.below-plane=mirror", "reflected above it (vct.below-plane=mirror)",
+                 "(vct.aim)", "m.png");
 }
 
 TEST(RenderCli, BadInputFailsCleanlyWithoutOutput) {
@@ -201,6 +204,7 @@ TEST(RenderCli, BadInputFailsCleanlyWithoutOutput) {
          "vct.lanes-base"},
         {"render scenes/cornell_box.gltf --ao vct --param vct.grid-shift=1.5 -o " + out, 2, "vct.grid-shift"},
         {"render scenes/cornell_box.gltf --ao vct --param vct.fit-reach=far -o " + out, 2, "vct.fit-reach"},
+        {"render scenes/cornell_box.gltf --ao vct --param vct.below-plane=sky -o " + out, 2, "vct.below-plane"},
         {"render scenes/cornell_box.gltf --ao vct --param vct.fit-reach=lanes --param vct.region=scene -o " + out, 2,
          "vct.region=scene fits none"},
         {"render scenes/cornell_box.gltf --aov bogus -o " + out, 2, "bogus"},

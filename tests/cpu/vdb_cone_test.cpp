@@ -48,7 +48,8 @@ TEST(VdbCone, OpenFloorIsUnoccluded) {
 // GI 2.2% short of albedo * sky. A shading normal tilted 40 degrees off the geometric one
 // puts whole cones below the plane: every lane of those is closed, the closed weight is the
 // closed cones' (computed here from the set), and a lane of them that rises above the plane is
-// not marched open.
+// not marched open. Mirrored (vct.below-plane=mirror) the lanes below the plane are marched
+// reflected above it, and over the open floor see what the open ones are given: nothing.
 TEST(VdbCone, LanesTakeTheirConesSideOfTheSurfacesPlane) {
     const float Le = 1.5f;
     Scene s;
@@ -66,12 +67,15 @@ TEST(VdbCone, LanesTakeTheirConesSideOfTheSurfacesPlane) {
         for (const glm::vec4& c : diffuseConeSet(cones))
             if (glm::dot(gpu::frame_fromZ(tilted) * glm::vec3(c), ng) <= 0.f) closed += c.w;
         ASSERT_GT(closed, 0.05) << "the tilt should close some of the " << cones << " cones";
-        for (int lanes : {1, 4, 16}) {
+        for (int lanes : {1, 4, 16})
+        for (ConeBelowPlane below : {ConeBelowPlane::Open, ConeBelowPlane::Mirror}) {
             ConeSettings cs = defaults();
             cs.coneCount = cones;
             cs.apertureDeg = defaultConeAperture(cones);
             cs.lanes = lanes;
-            const std::string what = std::to_string(cones) + " cones x " + std::to_string(lanes) + " lanes";
+            cs.belowPlane = below;
+            const std::string what = std::to_string(cones) + " cones x " + std::to_string(lanes) + " lanes" +
+                                     (below == ConeBelowPlane::Mirror ? ", mirrored" : "");
             std::vector<SparsePoint> up, tilt;
             for (glm::vec3 p : positions) {
                 up.push_back({p, ng, ng, albedo, true});
