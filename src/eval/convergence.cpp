@@ -1,6 +1,7 @@
 #include "eval/convergence.h"
 
 #include "cone/cone_set.h"
+#include "cone/cone_shared.h"
 #include "cone/cone_settings.h"
 #include "core/errors.h"
 #include "core/method.h"
@@ -345,9 +346,11 @@ AoLaneTrace vctAoLanesAt(const AoConvergenceCase& c, int voxelRes, const ParamMa
     const std::vector<glm::vec4> axes = diffuseConeSet(cone.coneCount);
     for (AoLaneRecord& r : trace.lanes) {
         r.rayHit = c.occluders.firstHit(p, r.lane.direction, 4.f * c.radius);
-        // A lane below the plane of a cone above it is open, or with vct.below-plane=mirror
-        // marched reflected above the plane (its record's direction is the reflected one).
-        const bool reflected = mirror && r.lane.tangent.z <= 0.f && axes[size_t(r.lane.cone)].z > 0.f;
+        // A lane below the plane of a cone above it (cone_laneState's open lane) is open, or with
+        // vct.below-plane=mirror marched reflected above the plane (its record's direction is the
+        // reflected one).
+        const bool reflected = mirror && gpu::cone_laneState(r.lane.tangent.z, axes[size_t(r.lane.cone)].z) ==
+                                             gpu::CONE_LANE_OPEN;
         const glm::vec3 tangent =
             reflected ? glm::vec3(r.lane.tangent.x, r.lane.tangent.y, -r.lane.tangent.z) : r.lane.tangent;
         r.exactOcclusion =

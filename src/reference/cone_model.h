@@ -86,7 +86,7 @@ public:
             if (glm::dot(axis, ng) <= 0.f) continue;
             const float share = mCdf[c] - (c == 0 ? 0.f : mCdf[c - 1]);
             if (glm::dot(w, axis) >= mCosHalf) sum += share;
-            if (mMirror && glm::dot(w - 2.f * glm::dot(w, ng) * ng, axis) >= mCosHalf) sum += share;
+            if (mMirror && glm::dot(glm::reflect(w, ng), axis) >= mCosHalf) sum += share;
         }
         return sum / capSolidAngle;
     }
