@@ -2,7 +2,8 @@
 // contract: opacity (1 where any triangle overlaps), weighted-average albedo, unit normal
 // and emission, and (TWO_SIDED) the unit normal with the doubleSided share of the weight
 // (voxelize_shared.h: two-sided voxels). Counts occupied voxels. OPACITY_ONLY (a grid for AO):
-// opacity alone, from the weight accumulator.
+// opacity alone, from the weight accumulator. EDGE_COVERAGE: the opacity of an occupied voxel
+// is vox_edgeOpacity of the coverage pass's sums instead of 1.
 #include "voxelize/voxelize_shared.h"
 
 layout(local_size_x = VOX_GRID_GROUP, local_size_y = VOX_GRID_GROUP, local_size_z = VOX_GRID_GROUP) in;
@@ -20,6 +21,10 @@ layout(binding = VOX_ACC_NORMAL + 2) uniform usampler3D accNormalZ;
 layout(binding = VOX_ACC_WEIGHT) uniform usampler3D accWeight;
 #ifdef TWO_SIDED
 layout(binding = VOX_ACC_TWO_SIDED) uniform usampler3D accTwoSided;
+#endif
+#ifdef EDGE_COVERAGE
+layout(binding = VOX_ACC_COVERAGE) uniform usampler3D accCoverage;
+layout(binding = VOX_ACC_AXES) uniform usampler3D accAxes;
 #endif
 #ifdef HAS_EMISSION
 layout(binding = VOX_ACC_EMISSION + 0) uniform usampler3D accEmissionRLo;
@@ -77,7 +82,18 @@ void main() {
         return;
     }
     atomicAdd(bigHeader.w, 1u);
+#ifdef EDGE_COVERAGE
+    uint axes = texelFetch(accAxes, v, 0).r;
+    ivec3 along = ivec3(0);
+    if (axes != 0u) along[vox_singleAxis(axes)] = 1;
+    ivec3 below = v - along, above = v + along;
+    uint coverageBelow = all(greaterThanEqual(below, ivec3(0))) ? texelFetch(accCoverage, below, 0).r : 0u;
+    uint coverageAbove = all(lessThan(above, uResolution)) ? texelFetch(accCoverage, above, 0).r : 0u;
+    imageStore(outOpacity, v,
+               vec4(vox_edgeOpacity(axes, coverageBelow, texelFetch(accCoverage, v, 0).r, coverageAbove)));
+#else
     imageStore(outOpacity, v, vec4(1.0));
+#endif
 #ifndef OPACITY_ONLY
     float weight = float(w);
     vec3 albedo = vec3(texelFetch(accAlbedoR, v, 0).r, texelFetch(accAlbedoG, v, 0).r, texelFetch(accAlbedoB, v, 0).r) /

@@ -20,8 +20,10 @@
 // normal, weight and, for scenes with doubleSided materials, their weight: 7 or 8 images) and, for scenes with emission, the emission pass
 // (voxelize_emission.glsl, EMISSION_PASS: three 64-bit sums, 6 images), which skips every
 // triangle whose material emits nothing (its contribution is exactly zero) and reads the
-// weights of the geometry pass at resolve. Integer sums are order-independent, so the split
-// leaves every voxel's value unchanged.
+// weights of the geometry pass at resolve, and, with vct.voxel.edges=coverage, the coverage
+// pass (voxelize_coverage.glsl, COVERAGE_PASS: the columns' covered areas and the dominant
+// axes, 2 images). Integer sums are order-independent, so the split leaves every voxel's
+// value unchanged.
 #ifdef BIG_PASS
 layout(local_size_x = VOX_BIG_GROUP) in;
 #else
@@ -144,7 +146,8 @@ void vox_add64(int channel, ivec3 v, float x) {
 }
 #endif
 
-void vox_accumulate(Tri tri, ivec3 v) {
+// `coverage`: the fixed-point area of the triangle in v's column (COVERAGE_PASS).
+void vox_accumulate(Tri tri, ivec3 v, uint coverage) {
     vec3 b = vox_barycentrics(tri, vec3(v) + 0.5);
     vec2 uv = b.x * tri.uv[0] + b.y * tri.uv[1] + b.z * tri.uv[2];
     vec4 color = scene_vertexColor(tri.color[0], tri.color[1], tri.color[2], b);
@@ -156,6 +159,9 @@ void vox_accumulate(Tri tri, ivec3 v) {
     vec3 e = clamp(scene_emission(tri.material, uv, tri.lod), 0.0, VOX_EMISSION_MAX);
     for (int c = 0; c < 3; ++c)
         if (e[c] > 0.0) vox_add64(c, v, e[c] * float(w) * VOX_EMISSION_SCALE);
+#elif defined(COVERAGE_PASS)
+    imageAtomicAdd(accCoverage, v, coverage);
+    imageAtomicOr(accAxes, v, 1u << uint(tri.axis));
 #elif defined(OPACITY_ONLY)
     imageAtomicAdd(accWeight, v, w);
 #else
@@ -202,12 +208,17 @@ void vox_column(Tri tri, int column) {
         kLo = max(kLo, int(floor(zMin)) - 1);
         kHi = min(kHi, int(floor(zMax)) + 1);
     }
+    uint coverage = 0u;
+#ifdef COVERAGE_PASS
+    coverage = vox_coverageFixed(vox_columnCoverage(vec2(tri.p[0][a], tri.p[0][b]), vec2(tri.p[1][a], tri.p[1][b]),
+                                                    vec2(tri.p[2][a], tri.p[2][b]), vec2(float(i), float(j))));
+#endif
     for (int k = kLo; k <= kHi; ++k) {
         ivec3 v;
         v[a] = i;
         v[b] = j;
         v[d] = k;
-        if (vox_overlaps(tri, vec3(v) + 0.5)) vox_accumulate(tri, v);
+        if (vox_overlaps(tri, vec3(v) + 0.5)) vox_accumulate(tri, v, coverage);
     }
 }
 

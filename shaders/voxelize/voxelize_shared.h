@@ -21,20 +21,24 @@ VCT_CONST int VOX_BIG_GROUP = 64;
 VCT_CONST int VOX_SMALL_COLUMNS = 48;
 VCT_CONST int VOX_GRID_GROUP = 4;   // 4x4x4 for per-voxel passes (resolve, inject, mips)
 
-// The 14 fixed-point accumulators (r32ui 3D textures), by index: albedo r, g, b; normal x,
+// The 16 fixed-point accumulators (r32ui 3D textures), by index: albedo r, g, b; normal x,
 // y, z (two's complement sums); the sum of weights; the sum of weights of doubleSided
 // materials (allocated only when the scene has one: TWO_SIDED); emission r lo, r hi, g lo,
-// g hi, b lo, b hi. GL guarantees 8 image units, so no pass binds them all as images: the
-// geometry pass of voxelize.glsl binds accumulator k at image unit k (k < VOX_ACC_EMISSION),
-// its emission pass binds k at image unit k - VOX_ACC_EMISSION, and resolve.glsl reads every
-// k through texture unit k (texelFetch; 14 of the 16 guaranteed), writing its outputs to the
-// image units below.
+// g hi, b lo, b hi; with vct.voxel.edges=coverage, the covered area of the voxel's columns
+// and the bits of the dominant axes that cross it (EDGE_COVERAGE). GL guarantees 8 image
+// units, so no pass binds them all as images: the geometry pass of voxelize.glsl binds
+// accumulator k at image unit k (k < VOX_ACC_EMISSION), the emission pass binds k at image
+// unit k - VOX_ACC_EMISSION, the coverage pass k at k - VOX_ACC_COVERAGE, and resolve.glsl
+// reads every k through texture unit k (texelFetch; all 16 of the 16 guaranteed), writing its
+// outputs to the image units below.
 VCT_CONST int VOX_ACC_ALBEDO = 0;
 VCT_CONST int VOX_ACC_NORMAL = 3;
 VCT_CONST int VOX_ACC_WEIGHT = 6;
 VCT_CONST int VOX_ACC_TWO_SIDED = 7;
 VCT_CONST int VOX_ACC_EMISSION = 8;
-VCT_CONST int VOX_ACC_COUNT = 14;
+VCT_CONST int VOX_ACC_COVERAGE = 14;
+VCT_CONST int VOX_ACC_AXES = 15;
+VCT_CONST int VOX_ACC_COUNT = 16;
 VCT_CONST int VOX_IMAGE_RESOLVE_OPACITY = 0;
 VCT_CONST int VOX_IMAGE_RESOLVE_ALBEDO = 1;
 VCT_CONST int VOX_IMAGE_RESOLVE_NORMAL = 2;
@@ -61,6 +65,77 @@ VCT_CONST float VOX_ALBEDO_SCALE = 4095.0;
 VCT_CONST float VOX_NORMAL_SCALE = 4095.0;
 VCT_CONST float VOX_EMISSION_SCALE = 4096.0;
 VCT_CONST float VOX_EMISSION_MAX = 1.0e9;
+
+// Edge coverage (vct.voxel.edges=coverage). An occupied voxel's opacity is 1 by default: a
+// sheet's edge then stands a whole voxel past the edge wherever it falls in the voxel, and
+// the sheet's boundary voxels occlude as if the sheet covered them. With edge coverage a voxel
+// crossed by surfaces of one dominant axis a holds the share of its column along a that they
+// cover: each triangle adds the area of its projection along its dominant axis inside the
+// voxel's column square (vox_columnCoverage) to every voxel of the column it crosses, summed
+// in fixed point at VOX_COVERAGE_SCALE per voxel face, and the opacity is the sum of the
+// voxel's and its two neighbours' along a, at most 1, in steps of 1 / VOX_COVERAGE_STEPS
+// (exact in the half-float level 0 the dense grid stores, so both backends hold the same
+// values). The neighbours are there because a sheet is cut into triangles: a sloped sheet's
+// two triangles over one column can cross different voxels of it, each holding its own
+// triangle's part of the column, and a ray along a would pass between them; with the
+// neighbours every voxel of the column holds the whole column, 1, as with occupancy. Inside a
+// sheet, flat or sloped, the voxels are 1; at its rim they hold the share it covers (twice
+// that where the sheet lies on the face between two voxels, both of which it crosses). A
+// voxel crossed by surfaces of two or more dominant axes (a room's corner, a wall under a
+// ceiling, a box's edge) keeps 1: its sheets meet inside it, and summing their shares (each
+// of its own axis) would open a gap the geometry closes.
+VCT_CONST float VOX_COVERAGE_SCALE = 65536.0f;
+VCT_CONST float VOX_COVERAGE_STEPS = 1024.0f;
+
+// Area of the triangle (a, b, c), projected to 2D, inside the unit square at `lo`: the
+// triangle clipped by the square's four sides (Sutherland-Hodgman), then the shoelace sum.
+VOX_FN float vox_columnCoverage(vec2 a, vec2 b, vec2 c, vec2 lo) {
+    vec2 poly[7];
+    vec2 next[7];
+    poly[0] = a - lo;
+    poly[1] = b - lo;
+    poly[2] = c - lo;
+    int n = 3;
+    for (int side = 0; side < 4; ++side) {
+        int axis = side / 2;
+        bool low = side % 2 == 0;  // keep p[axis] >= 0, else p[axis] <= 1
+        int m = 0;
+        for (int k = 0; k < n; ++k) {
+            vec2 u = poly[k];
+            vec2 v = poly[(k + 1) % n];
+            float du = low ? u[axis] : 1.0f - u[axis];
+            float dv = low ? v[axis] : 1.0f - v[axis];
+            if (du >= 0.0f) next[m++] = u;
+            if ((du >= 0.0f) != (dv >= 0.0f)) next[m++] = u + (du / (du - dv)) * (v - u);
+        }
+        n = m;
+        for (int k = 0; k < n; ++k) poly[k] = next[k];
+    }
+    float twiceArea = 0.0f;
+    for (int k = 0; k < n; ++k) {
+        vec2 u = poly[k];
+        vec2 v = poly[(k + 1) % n];
+        twiceArea += u.x * v.y - v.x * u.y;
+    }
+    return min(0.5f * max(twiceArea, -twiceArea), 1.0f);
+}
+
+// One triangle's covered area in fixed point.
+VOX_FN uint vox_coverageFixed(float area) { return uint(floor(area * VOX_COVERAGE_SCALE + 0.5f)); }
+
+// The dominant axis of a voxel whose surfaces have one (axes = 1, 2 or 4).
+VOX_FN int vox_singleAxis(uint axes) { return axes == 1u ? 0 : (axes == 2u ? 1 : 2); }
+
+// A voxel's opacity from its axis bits and the coverage sums of the voxel (`here`) and of its
+// two neighbours along its axis (0 where unoccupied); 0 when no triangle crossed it.
+VOX_FN float vox_edgeOpacity(uint axes, uint below, uint here, uint above) {
+    if (axes == 0u) return 0.0f;
+    if ((axes & (axes - 1u)) != 0u) return 1.0f;  // two or more dominant axes
+    float sum = min(float(below), VOX_COVERAGE_SCALE) + min(float(here), VOX_COVERAGE_SCALE) +
+                min(float(above), VOX_COVERAGE_SCALE);
+    float share = min(sum, VOX_COVERAGE_SCALE) * (VOX_COVERAGE_STEPS / VOX_COVERAGE_SCALE);
+    return floor(share + 0.5f) / VOX_COVERAGE_STEPS;
+}
 
 // Share of a voxel sample's radiance (premultiplied or not) that leaves towards a cone
 // travelling along unit d, given n, the mean normal of the sample's occupied voxels (the

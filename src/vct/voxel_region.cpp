@@ -5,6 +5,7 @@
 #include "vct/vct_passes.h"
 #include "vct/vct_settings.h"
 #include "voxelize/voxel_grid.h"
+#include "voxelize/voxel_settings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -47,6 +48,8 @@ std::string voxelRegionExplanation(const RenderRequest& r) {
         s << "; one dense grid of " << r.voxelRes << " voxels along its longest axis";
     if (vs.grid == "cube") s << ", padded to a cube (vct.grid=cube)";
     if (vs.gridShift != 0.f) s << ", moved by " << vs.gridShift << " voxel (vct.grid-shift)";
+    if (voxelSettings().read(r.params).edges == VoxelEdges::Coverage)
+        s << "; each voxel holds the share of its column its sheets cover (vct.voxel.edges=coverage)";
     return s.str();
 }
 

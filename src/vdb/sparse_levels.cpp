@@ -278,10 +278,12 @@ SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject
     if (!std::isfinite(sky) || sky < 0.f)
         throw InternalError("buildSparseVoxels", "sky radiance must be finite and >= 0");
     // The GPU path's keys, read for parity (the sparse grids always hold float32).
-    const float offset = voxelSettings().read(params).injectOffset;
+    const VoxelSettings voxelOptions = voxelSettings().read(params);
+    const float offset = voxelOptions.injectOffset;
     const BounceSettings bounce = bounceSettings().read(params);
     SparseVoxelScene voxels = voxelizeSparse(scene, options.region.empty() ? scene.bounds : options.region,
-                                             voxelRes, inject, options.attributes);
+                                             voxelRes, inject, options.attributes,
+                                             voxelOptions.edges == VoxelEdges::Coverage);
     if (inject) {
         injectSparseRadiance(voxels, scene, offset);
         // The bounces trace with the pixel cones' settings, as the GPU path's.

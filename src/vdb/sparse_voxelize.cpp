@@ -49,15 +49,42 @@ struct VoxelSums {
     uint64_t weight = 0;
     uint64_t twoSidedWeight = 0;  // of doubleSided materials
     uint64_t emission[3] = {0, 0, 0};
+    uint64_t coverage = 0;  // vox_columnCoverage's fixed-point areas (edge coverage)
+    uint32_t axes = 0;      // bit a: a triangle of dominant axis a crosses the voxel (edge coverage)
+
+    void add(const VoxelSums& t) {
+        for (int c = 0; c < 3; ++c) {
+            albedo[c] += t.albedo[c];
+            normal[c] += t.normal[c];
+            emission[c] += t.emission[c];
+        }
+        weight += t.weight;
+        twoSidedWeight += t.twoSidedWeight;
+        coverage += t.coverage;
+        axes |= t.axes;
+    }
 };
 
-// One thread's share: voxel -> index into `sums`. A grid without attributes needs only which
-// voxels are occupied (level 0's opacity is 1 on every occupied voxel): `slots` alone, no sums.
+// One thread's share: voxel -> index into `sums`. A grid without attributes or edge coverage
+// needs only which voxels are occupied (level 0's opacity is 1 on every occupied voxel):
+// `slots` alone, no sums.
 struct ThreadSums {
     openvdb::Int32Tree slots{-1};
     std::vector<VoxelSums> sums;
     bool attributes = true;
+    bool edgeCoverage = false;
 };
+
+// A voxel's sums over every thread's share; `threadLeaves[k]` is thread k's leaf holding it.
+VoxelSums sumsAt(const std::vector<const ThreadSums*>& threads,
+                 const std::vector<const openvdb::Int32Tree::LeafNodeType*>& threadLeaves, openvdb::Index offset) {
+    VoxelSums s;
+    for (size_t k = 0; k < threads.size(); ++k) {
+        const auto* tl = threadLeaves[k];
+        if (tl && tl->isValueOn(offset)) s.add(threads[k]->sums[size_t(tl->getValue(offset))]);
+    }
+    return s;
+}
 
 struct Tri {
     glm::vec3 p[3];  // voxel units
@@ -106,9 +133,10 @@ glm::vec3 barycentrics(const Tri& tri, const glm::vec3& q) {
     return b / (b.x + b.y + b.z);
 }
 
-// vox_accumulate: adds the triangle's fixed-point attributes at voxel v.
+// vox_accumulate: adds the triangle's fixed-point attributes at voxel v, and with edge coverage
+// `coverage`, its column's covered area in fixed point, and its dominant axis.
 void accumulate(const Scene& scene, const Tri& tri, const glm::ivec3& v, ThreadSums& ts,
-                openvdb::tree::ValueAccessor<openvdb::Int32Tree>& acc) {
+                openvdb::tree::ValueAccessor<openvdb::Int32Tree>& acc, uint32_t coverage) {
     const glm::vec3 b = barycentrics(tri, glm::vec3(v) + 0.5f);
     const glm::vec2 uv = b.x * tri.uv[0] + b.y * tri.uv[1] + b.z * tri.uv[2];
     const glm::vec4 color = vertexColorAt(scene, tri.index, b);
@@ -117,10 +145,22 @@ void accumulate(const Scene& scene, const Tri& tri, const glm::ivec3& v, ThreadS
         if (m.alphaMask && materialAlpha(scene, tri.material, uv, color) < m.alphaCutoff) return;
     }
     const openvdb::Coord ijk(v.x, v.y, v.z);
-    if (!ts.attributes) {
+    if (!ts.attributes && !ts.edgeCoverage) {
         acc.setValueOn(ijk, 0);
         return;
     }
+    int32_t slot = -1;
+    if (!acc.probeValue(ijk, slot)) {
+        slot = int32_t(ts.sums.size());
+        ts.sums.emplace_back();
+        acc.setValueOn(ijk, slot);
+    }
+    VoxelSums& s = ts.sums[size_t(slot)];
+    if (ts.edgeCoverage) {
+        s.coverage += coverage;
+        s.axes |= 1u << tri.axis;
+    }
+    if (!ts.attributes) return;
     const glm::vec3 albedo =
         tri.material < scene.materials.size() ? materialAlbedo(scene, tri.material, uv, color) : glm::vec3(1.f);
     const glm::vec3 emission = tri.material < scene.materials.size()
@@ -130,14 +170,6 @@ void accumulate(const Scene& scene, const Tri& tri, const glm::ivec3& v, ThreadS
     glm::vec3 n = b.x * tri.n[0] + b.y * tri.n[1] + b.z * tri.n[2];
     const float len = glm::length(n), faceLen = glm::length(tri.faceN);
     n = len > 1e-6f ? n / len : (faceLen > 0.f ? tri.faceN / faceLen : glm::vec3(0.f));
-
-    int32_t slot = -1;
-    if (!acc.probeValue(ijk, slot)) {
-        slot = int32_t(ts.sums.size());
-        ts.sums.emplace_back();
-        acc.setValueOn(ijk, slot);
-    }
-    VoxelSums& s = ts.sums[size_t(slot)];
     const uint64_t w = tri.weight;
     for (int c = 0; c < 3; ++c) {
         s.albedo[c] += uint64_t(std::round(std::clamp(albedo[c], 0.f, 1.f) * kAlbedoScale)) * w;
@@ -169,12 +201,18 @@ void voxelizeColumn(const Scene& scene, const Tri& tri, int i, int j, ThreadSums
         kLo = std::max(kLo, int(std::floor(zMin)) - 1);
         kHi = std::min(kHi, int(std::floor(zMax)) + 1);
     }
+    const uint32_t coverage =
+        ts.edgeCoverage ? gpu::vox_coverageFixed(gpu::vox_columnCoverage(glm::vec2(tri.p[0][a], tri.p[0][b]),
+                                                                         glm::vec2(tri.p[1][a], tri.p[1][b]),
+                                                                         glm::vec2(tri.p[2][a], tri.p[2][b]),
+                                                                         glm::vec2(float(i), float(j))))
+                        : 0u;
     for (int k = kLo; k <= kHi; ++k) {
         glm::ivec3 v;
         v[a] = i;
         v[b] = j;
         v[d] = k;
-        if (triangleOverlapsVoxel(tri.p, tri.faceN, glm::vec3(v) + 0.5f)) accumulate(scene, tri, v, ts, acc);
+        if (triangleOverlapsVoxel(tri.p, tri.faceN, glm::vec3(v) + 0.5f)) accumulate(scene, tri, v, ts, acc, coverage);
     }
 }
 
@@ -208,7 +246,8 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, int voxelRes) {
     return voxelizeSparse(scene, scene.bounds, voxelRes);
 }
 
-SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int voxelRes, bool lit, bool attributes) {
+SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int voxelRes, bool lit, bool attributes,
+                                bool edgeCoverage) {
     ensureOpenVdb();
     checkScene(scene);
     attributes = attributes || lit;  // injection reads them
@@ -232,6 +271,7 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
                           if (!ts) {
                               ts = std::make_unique<ThreadSums>();
                               ts->attributes = attributes;
+                              ts->edgeCoverage = edgeCoverage;
                           }
                           openvdb::tree::ValueAccessor<openvdb::Int32Tree> acc(ts->slots);
                           Tri tri;
@@ -258,6 +298,48 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
     out.opacity = makeGrid(opacity, "opacity");
     out.opacity->setGridClass(openvdb::GRID_FOG_VOLUME);
     out.opacityLevels = {out.opacity};
+    openvdb::tree::LeafManager<openvdb::FloatTree> opacityLeaves(*opacity);
+    auto threadLeavesAt = [&](const openvdb::Coord& origin) {
+        std::vector<const openvdb::Int32Tree::LeafNodeType*> leaves(threads.size());
+        for (size_t k = 0; k < threads.size(); ++k) leaves[k] = threads[k]->slots.probeConstLeaf(origin);
+        return leaves;
+    };
+    if (edgeCoverage) {
+        // Level 0's opacity (resolve.glsl): each voxel's coverage sum and axis bits, then
+        // vox_edgeOpacity of the voxel's and its neighbours' sums along its axis.
+        openvdb::UInt32Tree coverage(topology, 0u, openvdb::TopologyCopy());
+        openvdb::UInt32Tree axes(topology, 0u, openvdb::TopologyCopy());
+        openvdb::tree::LeafManager<openvdb::UInt32Tree> coverageLeaves(coverage), axesLeaves(axes);
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, coverageLeaves.leafCount()),
+                          [&](const tbb::blocked_range<size_t>& r) {
+                              for (size_t li = r.begin(); li != r.end(); ++li) {
+                                  auto& leaf = coverageLeaves.leaf(li);
+                                  auto& axesLeaf = axesLeaves.leaf(li);
+                                  const auto leaves = threadLeavesAt(leaf.origin());
+                                  for (auto it = leaf.beginValueOn(); it; ++it) {
+                                      const VoxelSums s = sumsAt(threads, leaves, it.pos());
+                                      it.setValue(uint32_t(std::min<uint64_t>(s.coverage, UINT32_MAX)));
+                                      axesLeaf.setValueOnly(it.pos(), s.axes);
+                                  }
+                              }
+                          });
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, opacityLeaves.leafCount()),
+                          [&](const tbb::blocked_range<size_t>& r) {
+                              openvdb::tree::ValueAccessor<const openvdb::UInt32Tree> at(coverage);
+                              for (size_t li = r.begin(); li != r.end(); ++li) {
+                                  auto& leaf = opacityLeaves.leaf(li);
+                                  const auto& axesLeaf = axesLeaves.leaf(li);
+                                  for (auto it = leaf.beginValueOn(); it; ++it) {
+                                      const uint32_t a = axesLeaf.getValue(it.pos());
+                                      const openvdb::Coord c = it.getCoord();
+                                      openvdb::Coord along(0, 0, 0);
+                                      if (a != 0u) along[gpu::vox_singleAxis(a)] = 1;
+                                      it.setValue(gpu::vox_edgeOpacity(a, at.getValue(c - along), at.getValue(c),
+                                                                       at.getValue(c + along)));
+                                  }
+                              }
+                          });
+    }
     if (!attributes) {
         // Opacity alone: the occupied set is the whole answer.
         out.stats.voxelizeSeconds = secondsSince(t0);
@@ -278,13 +360,11 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
         twoSidedShare = std::make_shared<openvdb::FloatTree>(topology, 0.f, 0.f, openvdb::TopologyCopy());
         twoSidedLeaves = std::make_unique<openvdb::tree::LeafManager<openvdb::FloatTree>>(*twoSidedShare);
     }
-    openvdb::tree::LeafManager<openvdb::FloatTree> opacityLeaves(*opacity);
     openvdb::tree::LeafManager<openvdb::Vec3STree> albedoLeaves(*albedo), normalLeaves(*normal),
         emissionLeaves(*emission);
 
     // Resolve (resolve.glsl): weighted averages from the summed fixed-point values.
     tbb::parallel_for(tbb::blocked_range<size_t>(0, opacityLeaves.leafCount()), [&](const tbb::blocked_range<size_t>& r) {
-        std::vector<const openvdb::Int32Tree::LeafNodeType*> threadLeaves(threads.size());
         for (size_t li = r.begin(); li != r.end(); ++li) {
             const auto& opLeaf = opacityLeaves.leaf(li);
             auto& alLeaf = albedoLeaves.leaf(li);
@@ -292,23 +372,10 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
             auto& emLeaf = emissionLeaves.leaf(li);
             if (alLeaf.origin() != opLeaf.origin() || emLeaf.origin() != opLeaf.origin())
                 throw InternalError("voxelizeSparse", "leaf order differs between grids of one topology");
-            for (size_t k = 0; k < threads.size(); ++k)
-                threadLeaves[k] = threads[k]->slots.probeConstLeaf(opLeaf.origin());
+            const auto threadLeaves = threadLeavesAt(opLeaf.origin());
             for (auto it = opLeaf.cbeginValueOn(); it; ++it) {
                 const openvdb::Index offset = it.pos();
-                VoxelSums s;
-                for (size_t k = 0; k < threads.size(); ++k) {
-                    const auto* tl = threadLeaves[k];
-                    if (!tl || !tl->isValueOn(offset)) continue;
-                    const VoxelSums& t = threads[k]->sums[size_t(tl->getValue(offset))];
-                    for (int c = 0; c < 3; ++c) {
-                        s.albedo[c] += t.albedo[c];
-                        s.normal[c] += t.normal[c];
-                        s.emission[c] += t.emission[c];
-                    }
-                    s.weight += t.weight;
-                    s.twoSidedWeight += t.twoSidedWeight;
-                }
+                const VoxelSums s = sumsAt(threads, threadLeaves, offset);
                 const float weight = float(s.weight);
                 openvdb::Vec3s a, n, e;
                 for (int c = 0; c < 3; ++c) {

@@ -124,9 +124,10 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, int voxelRes);
 // voxels will be injected): also the two-sided share where a material is doubleSided, which
 // only injection reads (voxelizeGrid's `lit`). `attributes` false and not `lit` (AO): opacity
 // alone, no albedo, normal or emission grids, and no per-voxel sums while voxelizing (the
-// same opacity: level 0 is 1 on every occupied voxel).
+// same opacity: level 0 is 1 on every occupied voxel). `edgeCoverage` (vct.voxel.edges=coverage):
+// level 0 holds the share of each voxel's column its sheets cover (vox_edgeOpacity).
 SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int voxelRes, bool lit = true,
-                                bool attributes = true);
+                                bool attributes = true, bool edgeCoverage = false);
 void injectSparseRadiance(SparseVoxelScene& voxels, const Scene& scene, float shadowOffsetVoxels);
 void buildSparseLevels(SparseVoxelScene& voxels, bool anisotropic = false, bool depthLevels = false);
 // Recomputes stats.memoryBytes / denseBytes / activeVoxels from the grids held.

@@ -4,17 +4,23 @@
 
 namespace vct {
 
-ProgramKey voxelizeProgramKey(bool emissionPass, bool bigPass, bool twoSided, bool opacityOnly) {
+ProgramKey voxelizeProgramKey(VoxelizePass pass, bool bigPass, bool twoSided, bool opacityOnly) {
     ShaderDefines d;
     if (bigPass) d.push_back({"BIG_PASS", "1"});
-    if (twoSided && !emissionPass && !opacityOnly) d.push_back({"TWO_SIDED", "1"});
-    if (opacityOnly && !emissionPass) d.push_back({"OPACITY_ONLY", "1"});
+    const bool geometry = pass == VoxelizePass::Geometry;
+    if (twoSided && geometry && !opacityOnly) d.push_back({"TWO_SIDED", "1"});
+    if (opacityOnly && geometry) d.push_back({"OPACITY_ONLY", "1"});
     // One source per pass, each declaring only the images it binds.
-    return computeProgramKey(emissionPass ? "voxelize/voxelize_emission.glsl" : "voxelize/voxelize.glsl", d);
+    const char* source = pass == VoxelizePass::Emission   ? "voxelize/voxelize_emission.glsl"
+                         : pass == VoxelizePass::Coverage ? "voxelize/voxelize_coverage.glsl"
+                                                          : "voxelize/voxelize.glsl";
+    return computeProgramKey(source, d);
 }
 
-ProgramKey resolveProgramKey(bool hasEmission, GLenum emissionFormat, bool twoSided, bool opacityOnly) {
+ProgramKey resolveProgramKey(bool hasEmission, GLenum emissionFormat, bool twoSided, bool opacityOnly,
+                             bool edgeCoverage) {
     ShaderDefines d;
+    if (edgeCoverage) d.push_back({"EDGE_COVERAGE", "1"});
     if (opacityOnly) {
         d.push_back({"OPACITY_ONLY", "1"});
         emissionFormat = GL_RGBA16F;  // no emission is written: one variant
@@ -59,14 +65,17 @@ std::vector<ProgramKey> voxelProgramVariants() {
     std::vector<ProgramKey> v;
     const GLenum radianceFormats[] = {GL_RGBA16F, GL_RGBA32F};
     for (bool big : {false, true}) {
-        v.push_back(voxelizeProgramKey(true, big, false));
-        for (bool twoSided : {false, true}) v.push_back(voxelizeProgramKey(false, big, twoSided));
-        v.push_back(voxelizeProgramKey(false, big, false, true));
+        v.push_back(voxelizeProgramKey(VoxelizePass::Emission, big, false));
+        v.push_back(voxelizeProgramKey(VoxelizePass::Coverage, big, false));
+        for (bool twoSided : {false, true}) v.push_back(voxelizeProgramKey(VoxelizePass::Geometry, big, twoSided));
+        v.push_back(voxelizeProgramKey(VoxelizePass::Geometry, big, false, true));
     }
-    v.push_back(resolveProgramKey(false, GL_RGBA16F, false, true));
-    for (bool emission : {false, true})
-        for (GLenum f : radianceFormats)
-            for (bool twoSided : {false, true}) v.push_back(resolveProgramKey(emission, f, twoSided));
+    for (bool coverage : {false, true}) {
+        v.push_back(resolveProgramKey(false, GL_RGBA16F, false, true, coverage));
+        for (bool emission : {false, true})
+            for (GLenum f : radianceFormats)
+                for (bool twoSided : {false, true}) v.push_back(resolveProgramKey(emission, f, twoSided, false, coverage));
+    }
     for (GLenum f : radianceFormats)
         for (int outer = 0; outer <= 7; ++outer)
             for (bool twoSided : {false, true})

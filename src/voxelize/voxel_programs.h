@@ -8,14 +8,20 @@
 
 namespace vct {
 
-// voxelize.glsl or voxelize_emission.glsl: the geometry or the emission accumulation, small or
-// big-triangle pass; the geometry pass sums the doubleSided weight when `twoSided`, and only
-// the weight when `opacityOnly` (an AO grid).
-ProgramKey voxelizeProgramKey(bool emissionPass, bool bigPass, bool twoSided, bool opacityOnly = false);
+// The voxelizer's accumulation passes, each its own source binding its own images.
+enum class VoxelizePass {
+    Geometry,  // voxelize.glsl: albedo, normal, weight (and the doubleSided weight)
+    Emission,  // voxelize_emission.glsl: the emission sums
+    Coverage,  // voxelize_coverage.glsl: the columns' covered areas and axes (vct.voxel.edges=coverage)
+};
+// One accumulation pass, small or big-triangle; the geometry pass sums the doubleSided weight
+// when `twoSided`, and only the weight when `opacityOnly` (an AO grid).
+ProgramKey voxelizeProgramKey(VoxelizePass pass, bool bigPass, bool twoSided, bool opacityOnly = false);
 // resolve.glsl: reads the emission accumulators when the scene has emission; writes emission
 // in `emissionFormat` (GL_RGBA16F or GL_RGBA32F); `twoSided`: the two-sided texture too;
-// `opacityOnly`: opacity alone (an AO grid).
-ProgramKey resolveProgramKey(bool hasEmission, GLenum emissionFormat, bool twoSided, bool opacityOnly = false);
+// `opacityOnly`: opacity alone (an AO grid); `edgeCoverage`: opacity from the coverage pass.
+ProgramKey resolveProgramKey(bool hasEmission, GLenum emissionFormat, bool twoSided, bool opacityOnly = false,
+                             bool edgeCoverage = false);
 // inject.glsl: radiance in `radianceFormat`; `outerLevels` clipmap levels continue shadow rays;
 // `twoSided`: two-sided voxels lit on each face (voxelize_shared.h); `lightBatches`: one of
 // several dispatches that each sum a slice of the lights (injectLightsPerDispatch).

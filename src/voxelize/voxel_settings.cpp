@@ -15,7 +15,13 @@ const SettingsTable<VoxelSettings>& voxelSettings() {
                      "at most this many lights per injection dispatch; 0 = as many as fit the loop budget a driver "
                      "allows one invocation (llvmpipe ends an invocation's loops after 65535 iterations, and each "
                      "light's shadow walk can cross the grid). The dispatches carry their sums, so the radiance is "
-                     "the same for any value (dense grid)");
+                     "the same for any value (dense grid)")
+            .choice("vct.voxel.edges", &VoxelSettings::edges,
+                    {{"occupied", VoxelEdges::Occupied}, {"coverage", VoxelEdges::Coverage}},
+                    "level 0's opacity: occupied = 1 on every voxel a triangle overlaps (a sheet's edge stands up to "
+                    "a voxel past it); coverage = the share of the voxel's column covered by the sheets crossing "
+                    "it when they share one dominant axis (1 where sheets of two axes meet, so rooms stay closed), "
+                    "which puts a sheet's edge where it is. Both backends");
     return table;
 }
 

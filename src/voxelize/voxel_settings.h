@@ -10,10 +10,16 @@ namespace vct {
 // could exceed the half range (e.g. emission 1e6).
 enum class VoxelPrecision { Auto, Half, Float };
 
+// Level 0's opacity: 1 on every voxel a triangle overlaps (occupied), or the share of the
+// voxel's column its sheets cover where they are of one dominant axis (coverage;
+// vox_edgeOpacity in shaders/voxelize/voxelize_shared.h).
+enum class VoxelEdges { Occupied, Coverage };
+
 struct VoxelSettings {
     VoxelPrecision precision = VoxelPrecision::Auto;
     float injectOffset = 2.f;  // voxels along the normal where injection's shadow rays start
     int dispatchLights = 0;    // at most this many lights per injection dispatch; 0 = the loop budget's
+    VoxelEdges edges = VoxelEdges::Occupied;
 };
 const SettingsTable<VoxelSettings>& voxelSettings();
 

@@ -122,15 +122,18 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     // voxel at the peak (accumulators, albedo, normal, radiance, directional mips): 4.4 GB RSS
     // measured at 512x257x512 (stability suite); lit grids of scenes with doubleSided materials
     // add the doubleSided weight (4) and the two-sided texture (8); a grid of opacity alone
-    // (no attributes) about 16 (the weight, opacity and directional levels).
+    // (no attributes) about 16 (the weight, opacity and directional levels); edge coverage adds
+    // its two accumulators (8).
+    const VoxelSettings voxelOptions = voxelSettings().read(params);
+    const bool edgeCoverage = voxelOptions.edges == VoxelEdges::Coverage;
     const double voxels = double(grid.resolution.x) * grid.resolution.y * grid.resolution.z;
-    const double bytesPerVoxel = !attributes ? 16.0 : twoSided ? 78.0 : 66.0;
+    const double bytesPerVoxel = (!attributes ? 16.0 : twoSided ? 78.0 : 66.0) + (edgeCoverage ? 8.0 : 0.0);
     const double needBytes = bytesPerVoxel * voxels, haveBytes = double(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
     if (haveBytes > 0.0 && needBytes > 0.5 * haveBytes)
         throw std::runtime_error(gridRefusal(grid, "needs about " + std::to_string(int(needBytes / 1e9)) +
                                                        " GB, more than half of this machine's " +
                                                        std::to_string(int(haveBytes / 1e9)) + " GB"));
-    const VoxelPrecision precision = voxelSettings().read(params).precision;
+    const VoxelPrecision precision = voxelOptions.precision;
     const float maxEmission = attributes ? needs.maxEmission : 0.f;
     const bool hasEmission = maxEmission > 0.f;
     const bool useFloat = precision == VoxelPrecision::Float ||
@@ -138,11 +141,20 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     const GLenum emissionFormat = useFloat ? GL_RGBA32F : GL_RGBA16F;
 
     // Programs first, so a first-use compile is not timed as voxelization.
-    const GLuint resolve = cachedProgram(resolveProgramKey(hasEmission, emissionFormat, twoSided, !attributes));
-    GLuint accumulate[2][2] = {};  // [emission pass][big pass]
-    for (int e = 0; e < (hasEmission ? 2 : 1); ++e)
+    const GLuint resolve =
+        cachedProgram(resolveProgramKey(hasEmission, emissionFormat, twoSided, !attributes, edgeCoverage));
+    // The passes this grid runs, each with the accumulators it binds as images [first, last).
+    struct AccumulatePass {
+        VoxelizePass pass;
+        int first, last;
+        GLuint program[2];  // [big pass]
+    };
+    std::vector<AccumulatePass> passes = {{VoxelizePass::Geometry, 0, gpu::VOX_ACC_EMISSION, {}}};
+    if (hasEmission) passes.push_back({VoxelizePass::Emission, gpu::VOX_ACC_EMISSION, gpu::VOX_ACC_COVERAGE, {}});
+    if (edgeCoverage) passes.push_back({VoxelizePass::Coverage, gpu::VOX_ACC_COVERAGE, gpu::VOX_ACC_COUNT, {}});
+    for (AccumulatePass& p : passes)
         for (int big = 0; big < 2; ++big)
-            accumulate[e][big] = cachedProgram(voxelizeProgramKey(e != 0, big != 0, twoSided, !attributes));
+            p.program[big] = cachedProgram(voxelizeProgramKey(p.pass, big != 0, twoSided, !attributes));
 
     auto scope = timer.scope(scopeName, true, Reruns::WhenSceneChanges);
     const glm::ivec3 res = grid.resolution;
@@ -151,6 +163,7 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     // the scene does not need (emission, the doubleSided weight) stay empty.
     std::vector<GlTexture> acc(size_t(gpu::VOX_ACC_COUNT));
     auto needed = [&](int i) {
+        if (i >= gpu::VOX_ACC_COVERAGE) return edgeCoverage;
         if (!attributes) return i == gpu::VOX_ACC_WEIGHT;
         if (i == gpu::VOX_ACC_TWO_SIDED) return twoSided;
         return i < gpu::VOX_ACC_EMISSION || hasEmission;
@@ -173,16 +186,14 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::VOX_BINDING_BIGLIST, bigList.id());
     bindSceneBuffers(scene);
 
-    // The geometry pass, then (emission only) the emission pass: each binds its own
-    // accumulators as images (voxelize_shared.h).
-    for (bool emissionPass : {false, true}) {
-        if (emissionPass && !hasEmission) break;
-        const int first = emissionPass ? gpu::VOX_ACC_EMISSION : 0;
-        const int last = emissionPass ? gpu::VOX_ACC_COUNT : gpu::VOX_ACC_EMISSION;
-        for (int i = first; i < last; ++i)
-            if (acc[size_t(i)]) bindImage3D(GLuint(i - first), acc[size_t(i)].id(), 0, GL_READ_WRITE, GL_R32UI);
-        accumulateTriangles(scene, grid, bigList, accumulate[emissionPass][0], accumulate[emissionPass][1]);
-        for (int i = first; i < last; ++i) glBindImageTexture(GLuint(i - first), 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    // The geometry pass, then (emission only) the emission pass and (edge coverage only) the
+    // coverage pass: each binds its own accumulators as images (voxelize_shared.h).
+    for (const AccumulatePass& p : passes) {
+        for (int i = p.first; i < p.last; ++i)
+            if (acc[size_t(i)]) bindImage3D(GLuint(i - p.first), acc[size_t(i)].id(), 0, GL_READ_WRITE, GL_R32UI);
+        accumulateTriangles(scene, grid, bigList, p.program[0], p.program[1]);
+        for (int i = p.first; i < p.last; ++i)
+            glBindImageTexture(GLuint(i - p.first), 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
     }
 
     // Resolve into the contract's float textures.

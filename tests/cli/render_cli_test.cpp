@@ -173,6 +173,10 @@ TEST(RenderCli, ExplainPrintsRunAndSkippedPasses) {
                  "each marched as 4 lanes (vct.lanes=auto at 32^3 with vct.lanes-base=16)", "", "l.png");
     explainCones("--voxel-res 16 --param vct.below-plane=mirror", "reflected above it (vct.below-plane=mirror)",
                  "(vct.aim)", "m.png");
+    // The voxelize pass's line says when level 0 holds the columns' coverage.
+    explainCones("--voxel-res 16 --param vct.voxel.edges=coverage",
+                 "the share of its column its sheets cover (vct.voxel.edges=coverage)", "(vct.aim)", "e.png");
+    explainCones("--voxel-res 16", "voxelize: world-space occupancy", "(vct.voxel.edges=coverage)", "o.png");
 }
 
 TEST(RenderCli, BadInputFailsCleanlyWithoutOutput) {

@@ -19,6 +19,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -132,6 +133,47 @@ TEST(VdbVsGl, SameLayoutOccupancyAndRadiance) {
     EXPECT_LT(maxAlbedoErr, 2e-3);       // half-float storage of the GPU albedo
     // Half floats hold ~3 decimal digits; a voxel whose shadow walk grazes an edge may differ.
     EXPECT_LT(maxRadianceRelErr, 0.01) << "radiance differs beyond half precision";
+}
+
+// vct.voxel.edges=coverage: the dense voxelizer's coverage pass and resolve give level 0 the
+// values the sparse voxelizer gives, voxel by voxel (steps of 1/1024, exact in half floats), on
+// the boxes scene and a tilted plate, for an AO grid (opacity alone) and a lit one.
+TEST(VdbVsGl, EdgeCoverageLevelZeroMatchesTheSparseOne) {
+    Scene s = boxesScene();
+    vcttest::addQuad(s, {0.3f, 1.6f, -0.4f}, {0.9f, 0.35f, 0.1f}, {-0.2f, 0.1f, 0.7f}, s.triangleMaterial[0]);
+    vcttest::finish(s);
+    GlContext& gl = GlContext::shared();
+    const GpuScene gpu = uploadScene(s);
+    ParamMap params;
+    params.set("vct.voxel.edges", "coverage");
+    PassTimer timer;
+    for (bool lit : {false, true}) {
+        const VoxelGrid grid = voxelizeScene(gpu, s.bounds, 48, params, timer, lit, lit);
+        const SparseVoxelScene sparse = voxelizeSparse(s, s.bounds, 48, lit, lit, true);
+        ASSERT_EQ(sparse.resolution, grid.resolution);
+        const glm::ivec3 r = grid.resolution;
+        const std::vector<float> opacity = readLevel0(grid.opacity, r, 1);
+        gl.checkErrors("vdb_vs_gl: edge coverage");
+        auto acc = sparse.opacity->getConstAccessor();
+        size_t partial = 0, full = 0, differ = 0;
+        double maxDiff = 0.0;
+        for (int z = 0; z < r.z; ++z)
+            for (int y = 0; y < r.y; ++y)
+                for (int x = 0; x < r.x; ++x) {
+                    const float g = opacity[(size_t(z) * r.y + y) * r.x + x], c = acc.getValue({x, y, z});
+                    partial += c > 0.f && c < 1.f;
+                    full += c == 1.f;
+                    differ += g != c;
+                    maxDiff = std::max(maxDiff, double(std::abs(g - c)));
+                }
+        std::printf("[vdb_vs_gl] edge coverage (%s): %zu partial, %zu full voxels; %zu differ, max %.4f\n",
+                    lit ? "lit" : "AO", partial, full, differ, maxDiff);
+        EXPECT_GT(partial, 20u) << "the tilted plate's rim";
+        EXPECT_GT(full, 3000u);
+        // Float clipping on both sides; a fused multiply-add may move a sum across a step.
+        EXPECT_LE(differ, (partial + full) / 1000);
+        EXPECT_LE(maxDiff, 1.5 / 1024.0);
+    }
 }
 
 struct Images {
