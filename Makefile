@@ -126,6 +126,10 @@ convergence: build
 		--param vct.grid=cube --param vct.sharpen=4 --param vct.aim=1 --param vct.level-bias=-2 \
 		--param vct.fit-reach=lanes --cases ' off' --grid-shifts -0.5,-0.25,0,0.25,0.5 \
 		--markdown docs/convergence_vdb_lanes16_sharpen_aim_bias2_reach_shifts.md
+	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend vdb --param vct.lanes=0 --param vct.lanes-base=16 \
+		--param vct.grid=cube --param vct.sharpen=4 --param vct.aim=1 --param vct.fit-reach=lanes \
+		--param vct.level-bias=-2 --param vct.voxel.edges=coverage --cases ' off' --grid-shifts -0.5,-0.25,0,0.25,0.5 \
+		--markdown docs/convergence_vdb_lanes16_sharpen_aim_bias2_reach_coverage_shifts.md
 	./$(BUILD)/bench_convergence --schedule 64:6,128:16,256:32 --backend vdb --param vct.lanes=0 --param vct.lanes-base=16 \
 		--param vct.grid=cube --param vct.sharpen=4 --param vct.aim=1 --param vct.level-bias=-2 --param vct.fit-reach=lanes \
 		--cases ' off' --markdown docs/convergence_schedule_vdb_lanes16_sharpen_aim_bias2_reach.md
@@ -145,6 +149,10 @@ convergence: build
 		--param vct.grid=cube --param vct.sharpen=4 --param vct.aim=1 --param vct.fit-reach=lanes --param vct.level-bias=-2 \
 		--param vct.below-plane=mirror --param vct.voxel.edges=coverage --cases ' off' \
 		--markdown docs/convergence_schedule_vdb_lanes16_sharpen_aim_bias2_reach_mirror_coverage.md
+	./$(BUILD)/bench_convergence --schedule 64:6,128:16,256:32 --backend vdb --param vct.lanes=0 --param vct.lanes-base=16 \
+		--param vct.grid=cube --param vct.sharpen=4 --param vct.aim=1 --param vct.fit-reach=lanes --param vct.level-bias=-2 \
+		--param vct.below-plane=mirror --param vct.voxel.edges=coverage --cases ' off' --grid-shifts -0.5,-0.25,0,0.25,0.5 \
+		--markdown docs/convergence_schedule_vdb_lanes16_sharpen_aim_bias2_reach_mirror_coverage_shifts.md
 	./$(BUILD)/bench_convergence --res 128,256,512 --backend vdb --param vct.cones=32 --param vct.lanes=31 \
 		--param vct.grid=cube --param vct.sharpen=4 --param vct.aim=1 --markdown docs/convergence_vdb_lanes32_sharpen_aim.md
 	./$(BUILD)/bench_convergence --schedule 64:6,128:16,256:64:64,512:64:64 --backend vdb --param vct.grid=cube \

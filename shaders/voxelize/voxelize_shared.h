@@ -84,6 +84,8 @@ VCT_CONST float VOX_EMISSION_MAX = 1.0e9;
 // voxel crossed by surfaces of two or more dominant axes (a room's corner, a wall under a
 // ceiling, a box's edge) keeps 1: its sheets meet inside it, and summing their shares (each
 // of its own axis) would open a gap the geometry closes.
+// The dense grid's sums are 32-bit: a voxel overflows past 65536 triangles that each cover its
+// whole column (the sparse sums saturate there).
 VCT_CONST float VOX_COVERAGE_SCALE = 65536.0f;
 VCT_CONST float VOX_COVERAGE_STEPS = 1024.0f;
 
