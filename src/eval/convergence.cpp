@@ -352,7 +352,7 @@ AoLaneTrace vctAoLanesAt(const AoConvergenceCase& c, int voxelRes, const ParamMa
         const bool reflected = mirror && gpu::cone_laneState(r.lane.tangent.z, axes[size_t(r.lane.cone)].z) ==
                                              gpu::CONE_LANE_OPEN;
         const glm::vec3 tangent =
-            reflected ? glm::vec3(r.lane.tangent.x, r.lane.tangent.y, -r.lane.tangent.z) : r.lane.tangent;
+            reflected ? gpu::cone_mirrored(r.lane.tangent, glm::vec3(0.f, 0.f, 1.f)) : r.lane.tangent;
         r.exactOcclusion =
             tangent.z > 0.f ? 1.0 - analyticConeModelAo(c.occluders, p, n, c.radius, {glm::vec4(tangent, 1.f)},
                                                         trace.laneApertureDeg, kAnalyticConeSamples, mirror)
