@@ -72,6 +72,13 @@ results: build
 # with them at 6 / 16 / 32 cones, on one alignment and pooled, with the caps below the plane
 # counted open and mirrored; AO, then
 # GI on the emitting families) and the Cornell box's per-surface GI table.
+# The lanes' march of the later tables: 6 cones in auto lanes of base 16 on a cube, sharpened,
+# aimed, texels of a quarter footprint, the lanes' reach; the resolutions and alignments pooled.
+CONV_RES := 32,64,128,256
+LANES16_BIAS2 := --param vct.lanes=0 --param vct.lanes-base=16 --param vct.grid=cube --param vct.sharpen=4 \
+	--param vct.aim=1 --param vct.fit-reach=lanes --param vct.level-bias=-2
+GRID_SHIFTS := --grid-shifts -0.5,-0.25,0,0.25,0.5
+
 convergence: build
 	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend gl --markdown docs/convergence_gl.md
 	./$(BUILD)/bench_convergence --res 32,64,128,256 --backend vdb --markdown docs/convergence_vdb.md
@@ -153,6 +160,17 @@ convergence: build
 		--param vct.grid=cube --param vct.sharpen=4 --param vct.aim=1 --param vct.fit-reach=lanes --param vct.level-bias=-2 \
 		--param vct.below-plane=mirror --param vct.voxel.edges=coverage --cases ' off' --grid-shifts -0.5,-0.25,0,0.25,0.5 \
 		--markdown docs/convergence_schedule_vdb_lanes16_sharpen_aim_bias2_reach_mirror_coverage_shifts.md
+	./$(BUILD)/bench_convergence --res $(CONV_RES) --backend vdb $(LANES16_BIAS2) --param vct.voxel.edges=coverage \
+		--cases ' off' --markdown docs/convergence_vdb_lanes16_sharpen_aim_bias2_reach_coverage.md
+	./$(BUILD)/bench_convergence --res $(CONV_RES) --backend vdb $(LANES16_BIAS2) --param vct.voxel.edges=sheet \
+		--cases ' off' --markdown docs/convergence_vdb_lanes16_sharpen_aim_bias2_reach_sheet.md
+	./$(BUILD)/bench_convergence --res $(CONV_RES) --backend gl $(LANES16_BIAS2) --param vct.voxel.edges=sheet \
+		--cases ' off' --markdown docs/convergence_gl_lanes16_sharpen_aim_bias2_reach_sheet.md
+	./$(BUILD)/bench_convergence --res $(CONV_RES) --backend vdb $(LANES16_BIAS2) --param vct.voxel.edges=sheet \
+		--cases ' off' $(GRID_SHIFTS) --markdown docs/convergence_vdb_lanes16_sharpen_aim_bias2_reach_sheet_shifts.md
+	./$(BUILD)/bench_convergence --schedule 64:6,128:16,256:32 --backend vdb $(LANES16_BIAS2) \
+		--param vct.below-plane=mirror --param vct.voxel.edges=sheet --cases ' off' $(GRID_SHIFTS) \
+		--markdown docs/convergence_schedule_vdb_lanes16_sharpen_aim_bias2_reach_mirror_sheet_shifts.md
 	./$(BUILD)/bench_convergence --res 128,256,512 --backend vdb --param vct.cones=32 --param vct.lanes=31 \
 		--param vct.grid=cube --param vct.sharpen=4 --param vct.aim=1 --markdown docs/convergence_vdb_lanes32_sharpen_aim.md
 	./$(BUILD)/bench_convergence --schedule 64:6,128:16,256:64:64,512:64:64 --backend vdb --param vct.grid=cube \

@@ -146,7 +146,7 @@ CountedPass countConeFetches(bool gi, const VoxelGrid& grid, const GBuffer& gbuf
     if (bound.slices.count() > 1)
         throw UsageError("the fetch count marches all cones in one dispatch; these settings need " +
                          std::to_string(bound.slices.count()) + " (CONE_LOOP_BUDGET)");
-    const GLuint program = cachedProgram(coneCountProgramKey(gi, bound.directional, bound.depthLevels, bound.sharpen));
+    const GLuint program = cachedProgram(coneCountProgramKey(gi, bound.directional, bound.depthLevels, bound.sharpen, bound.sheets));
     CountedPass out;
     GlTexture value = createTexture2D(GL_RGBA32F, gbuffer.width, gbuffer.height);
     out.counts = createTexture2D(GL_R32UI, gbuffer.width, gbuffer.height);

@@ -125,8 +125,11 @@ ConeGather cone_gatherVoxel(ConeGather g, vec3 p, vec3 n, vec3 ng, float offset,
             d = cone_mirrored(d, ng);  // vct.below-plane=mirror
         }
         // vct.aim: towards the point the lane's ray from p reaches at maxDist.
-        vec3 marched = (u.lanes.z & CONE_LANES_AIM) != 0 ? cone_aimedDirection(d, ng, offset, maxDist) : d;
-        ConeResult r = cone_marchVolume(m, origin, marched, h0, dot(marched, ng), maxDist, falloff);
+        // It marches to that point (cone_aimedReach), not maxDist past its start.
+        bool aim = (u.lanes.z & CONE_LANES_AIM) != 0;
+        vec3 marched = aim ? cone_aimedDirection(d, ng, offset, maxDist) : d;
+        float reach = aim ? cone_aimedReach(d, ng, offset, maxDist) : maxDist;
+        ConeResult r = cone_marchVolume(m, origin, marched, h0, dot(marched, ng), reach, falloff);
         g.radiance += cone.w * (r.radiance + (1.0 - r.alpha) * sky);
         g.occlusion += cone.w * r.alpha;
         g.samples += r.samples;

@@ -7,11 +7,21 @@
 // the same both ways along an axis: VoxelGrid::anisoOpacity), CONE_DEPTH_LEVELS (the
 // directional levels hold optical depth, opacity_depth.h), CONE_SHARPEN (vct.sharpen > 1: each
 // axis fetched at its own coordinate, sharpened along it, and the two levels of a fractional
-// lod blended by hand). The depth levels are a compiled
+// lod blended by hand), CONE_SHEETS (AO, vct.voxel.edges=sheet: the base level read from the
+// sheet texels, cone_sampleSheets). The depth levels are a compiled
 // variant, not a uniform branch: llvmpipe paid for the untaken branch's code in every sample
 // (AO 512^2 at trace-scale=4: trace stage 90 ms with the branch, 62 ms without).
 #include "cone/cone_common.glsl"
 #include "voxelize/opacity_depth.h"
+
+#ifdef CONE_SHEETS
+layout(binding = CONE_UNIT_SHEETS) uniform sampler3D cone_sheetTexture;
+// cone_sampleSheets' texel of voxel v (VoxelGrid::sheets); outside the grid none.
+vec4 cone_volumeSheet(ivec3 v) {
+    if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(u.gridResolution.xyz)))) return vec4(0.0, 0.0, 0.0, -1.0);
+    return texelFetch(cone_sheetTexture, v, 0);
+}
+#endif
 
 layout(binding = CONE_UNIT_OPACITY) uniform sampler3D cone_isoTexture;
 #if CONE_GI
@@ -85,9 +95,19 @@ vec4 cone_sampleBaseSharpened(vec3 tc, vec3 d) {
 #endif
 
 #if CONE_ANISO
-// The base level at a sample of direction d: sharpened (vct.sharpen) or one linear fetch.
-vec4 cone_sampleBase(vec3 tc, vec3 d) {
+// The base level at a sample of direction d, voxel-space p, footprint 2^lod, step dt: the sheet
+// texels (CONE_SHEETS: eight fetches), sharpened (vct.sharpen) or one linear fetch.
+vec4 cone_sampleBase(vec3 p, vec3 tc, vec3 d, float lod, float dt) {
+#if defined(CONE_SHEETS)
+    cone_fetches += 8.0;
+    float texel = exp2(max(lod, 0.0));
 #if defined(CONE_SHARPEN)
+    float s = u.camera.w;
+#else
+    float s = 1.0;
+#endif
+    return vec4(0.0, 0.0, 0.0, cone_sampleSheets(p, d, dt, texel, s));
+#elif defined(CONE_SHARPEN)
     return cone_sampleBaseSharpened(tc, d);
 #else
     return cone_sampleIso(tc, 0.0);
@@ -124,8 +144,9 @@ vec4 cone_sampleAniso(vec3 tc, vec3 d, float lod) {
 }
 #endif
 
-// Premultiplied (radiance, alpha) of the grid at voxel-space point p, footprint 2^lod voxels.
-vec4 cone_sampleGrid(vec3 p, vec3 d, float lod) {
+// Premultiplied (radiance, alpha) of the grid at voxel-space point p, footprint 2^lod voxels,
+// step dt.
+vec4 cone_sampleGrid(vec3 p, vec3 d, float lod, float dt) {
     vec3 tc = p / u.gridResolution.xyz;
 #if CONE_ANISO
     vec4 directional = cone_sampleAniso(tc, d, max(lod - 1.0, 0.0));
@@ -136,10 +157,10 @@ vec4 cone_sampleGrid(vec3 p, vec3 d, float lod) {
 #ifdef CONE_DEPTH_LEVELS
         // With optical-depth levels the two levels blend as depth (the base level's 0 / 1
         // voxels filter to VOX_DEPTH_MAX times their opacity).
-        directional = vox_alphaFromDepth(mix(vox_depthFromCoverage(cone_sampleBase(tc, d)),
+        directional = vox_alphaFromDepth(mix(vox_depthFromCoverage(cone_sampleBase(p, tc, d, lod, dt)),
                                              vox_depthFromAlpha(directional), lod));
 #else
-        directional = mix(cone_sampleBase(tc, d), directional, lod);
+        directional = mix(cone_sampleBase(p, tc, d, lod, dt), directional, lod);
 #endif
     }
     return directional;
@@ -169,7 +190,7 @@ bool cone_volumeLeaving(vec3 p, vec3 d, float texel) {
     return cone_leaving(p, d, u.gridResolution.xyz, 1.5 * texel);
 }
 
-vec4 cone_volumeSample(vec3 p, vec3 d, float lod) { return cone_sampleGrid(p, d, lod); }
+vec4 cone_volumeSample(vec3 p, vec3 d, float lod, float dt) { return cone_sampleGrid(p, d, lod, dt); }
 
 float cone_volumeFacing(vec3 p, vec3 d, float lod, vec4 s) {
 #if CONE_GI

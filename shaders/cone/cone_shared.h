@@ -54,7 +54,8 @@ VCT_CONST int CONE_UNIT_COLOR = 17;     // rayMarchVoxels: albedo or radiance
 VCT_CONST int CONE_UNIT_NORMAL = 18;    // GI: grid.normal (mipmapped), for the facing test
 VCT_CONST int CONE_UNIT_BOUNCE_DIRECT = 19;  // cone_bounce.glsl: emission + direct light (level 0)
 VCT_CONST int CONE_UNIT_BOUNCE_ALBEDO = 20;  // cone_bounce.glsl: grid.albedo
-VCT_CONST int CONE_UNIT_BOUNCE_EMISSION = 21;  // cone_bounce.glsl: grid.emission (BOUNCE_EMITTED)
+VCT_CONST int CONE_UNIT_BOUNCE_EMISSION = 21;
+VCT_CONST int CONE_UNIT_SHEETS = 22;  // AO with vct.voxel.edges=sheet: grid.sheets (CONE_SHEETS)  // cone_bounce.glsl: grid.emission (BOUNCE_EMITTED)
 VCT_CONST int CONE_IMAGE_OUTPUT = 0;    // image unit of the output texture
 VCT_CONST int CONE_UBO_BINDING = 0;
 // A gather split over dispatches: its running sums per pixel (or listed voxel), read by the
@@ -227,10 +228,19 @@ CONE_FN int cone_laneState(float rise, float axisRise) {
 // direction whose ray at maxDist is less than `offset` above the tangent plane would aim
 // downwards and is kept level (its component along ng removed), offset voxels above the plane.
 // d unit, dot(d, ng) > 0 (a marched cone), maxDist > 0.
-CONE_FN vec3 cone_aimedDirection(vec3 d, vec3 ng, float offset, float maxDist) {
+CONE_FN vec3 cone_aimedSpan(vec3 d, vec3 ng, float offset, float maxDist) {
     vec3 a = d * maxDist - ng * offset;
-    a = a - ng * min(dot(a, ng), 0.0f);
+    return a - ng * min(dot(a, ng), 0.0f);
+}
+CONE_FN vec3 cone_aimedDirection(vec3 d, vec3 ng, float offset, float maxDist) {
+    vec3 a = cone_aimedSpan(d, ng, offset, maxDist);
     return dot(a, a) > 0.0f ? normalize(a) : d;
+}
+// How far an aimed cone marches: to the point it is aimed at, |d maxDist - ng offset| (about
+// maxDist - offset dot(d, ng)), not maxDist, which would carry it that far past its ray's end
+// and let it see occluders up to `offset` voxels beyond maxDist.
+CONE_FN float cone_aimedReach(vec3 d, vec3 ng, float offset, float maxDist) {
+    return length(cone_aimedSpan(d, ng, offset, maxDist));
 }
 // vct.below-plane=mirror: a direction below the geometric plane reflected above it. The Vogel
 // sets' outer caps reach below the plane (2.2% of the 16-cone set's weight); counted open, that

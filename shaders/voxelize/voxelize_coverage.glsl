@@ -9,5 +9,11 @@
 
 layout(r32ui, binding = 0) uniform coherent uimage3D accCoverage;
 layout(r32ui, binding = 1) uniform coherent uimage3D accAxes;
+#ifdef EDGE_SHEETS
+// vct.voxel.edges=sheet: the span's two maxima (vox_sheetSpanFixed), accumulators
+// VOX_ACC_SHEET_LO and VOX_ACC_SHEET_HI.
+layout(r32ui, binding = 2) uniform coherent uimage3D accSheetLo;
+layout(r32ui, binding = 3) uniform coherent uimage3D accSheetHi;
+#endif
 
 #include "voxelize/voxelize_pass.glsl"

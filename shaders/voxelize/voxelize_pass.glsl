@@ -146,8 +146,9 @@ void vox_add64(int channel, ivec3 v, float x) {
 }
 #endif
 
-// `coverage`: the fixed-point area of the triangle in v's column (COVERAGE_PASS).
-void vox_accumulate(Tri tri, ivec3 v, uint coverage) {
+// `coverage`: the fixed-point area of the triangle in v's column (COVERAGE_PASS); `sheetZ`: the
+// span of its plane over that area along the dominant axis (EDGE_SHEETS).
+void vox_accumulate(Tri tri, ivec3 v, uint coverage, vec2 sheetZ) {
     vec3 b = vox_barycentrics(tri, vec3(v) + 0.5);
     vec2 uv = b.x * tri.uv[0] + b.y * tri.uv[1] + b.z * tri.uv[2];
     vec4 color = scene_vertexColor(tri.color[0], tri.color[1], tri.color[2], b);
@@ -162,6 +163,13 @@ void vox_accumulate(Tri tri, ivec3 v, uint coverage) {
 #elif defined(COVERAGE_PASS)
     imageAtomicAdd(accCoverage, v, coverage);
     imageAtomicOr(accAxes, v, 1u << uint(tri.axis));
+#ifdef EDGE_SHEETS
+    if (coverage > 0u) {
+        uvec2 span = vox_sheetSpanFixed(sheetZ, float(v[tri.axis]));
+        imageAtomicMax(accSheetLo, v, span.x);
+        imageAtomicMax(accSheetHi, v, span.y);
+    }
+#endif
 #elif defined(OPACITY_ONLY)
     imageAtomicAdd(accWeight, v, w);
 #else
@@ -209,16 +217,24 @@ void vox_column(Tri tri, int column) {
         kHi = min(kHi, int(floor(zMax)) + 1);
     }
     uint coverage = 0u;
+    vec2 sheetZ = vec2(0.0);
 #ifdef COVERAGE_PASS
-    coverage = vox_coverageFixed(vox_columnCoverage(vec2(tri.p[0][a], tri.p[0][b]), vec2(tri.p[1][a], tri.p[1][b]),
-                                                    vec2(tri.p[2][a], tri.p[2][b]), vec2(float(i), float(j))));
+#ifdef EDGE_SHEETS
+    vec4 plane = vec4(n[a], n[b], n[d], dot(n, tri.p[0]));
+#else
+    vec4 plane = vec4(0.0);
+#endif
+    vec3 areaSpan = vox_columnCoverageSpan(vec2(tri.p[0][a], tri.p[0][b]), vec2(tri.p[1][a], tri.p[1][b]),
+                                           vec2(tri.p[2][a], tri.p[2][b]), vec2(float(i), float(j)), plane);
+    coverage = vox_coverageFixed(areaSpan.x);
+    sheetZ = areaSpan.yz;
 #endif
     for (int k = kLo; k <= kHi; ++k) {
         ivec3 v;
         v[a] = i;
         v[b] = j;
         v[d] = k;
-        if (vox_overlaps(tri, vec3(v) + 0.5)) vox_accumulate(tri, v, coverage);
+        if (vox_overlaps(tri, vec3(v) + 0.5)) vox_accumulate(tri, v, coverage, sheetZ);
     }
 }
 

@@ -21,16 +21,17 @@ VCT_CONST int VOX_BIG_GROUP = 64;
 VCT_CONST int VOX_SMALL_COLUMNS = 48;
 VCT_CONST int VOX_GRID_GROUP = 4;   // 4x4x4 for per-voxel passes (resolve, inject, mips)
 
-// The 16 fixed-point accumulators (r32ui 3D textures), by index: albedo r, g, b; normal x,
+// The 18 fixed-point accumulators (r32ui 3D textures), by index: albedo r, g, b; normal x,
 // y, z (two's complement sums); the sum of weights; the sum of weights of doubleSided
 // materials (allocated only when the scene has one: TWO_SIDED); emission r lo, r hi, g lo,
-// g hi, b lo, b hi; with vct.voxel.edges=coverage, the covered area of the voxel's columns
-// and the bits of the dominant axes that cross it (EDGE_COVERAGE). GL guarantees 8 image
-// units, so no pass binds them all as images: the geometry pass of voxelize.glsl binds
-// accumulator k at image unit k (k < VOX_ACC_EMISSION), the emission pass binds k at image
-// unit k - VOX_ACC_EMISSION, the coverage pass k at k - VOX_ACC_COVERAGE, and resolve.glsl
-// reads every k through texture unit k (texelFetch; all 16 of the 16 guaranteed), writing its
-// outputs to the image units below.
+// g hi, b lo, b hi; with vct.voxel.edges=coverage or sheet, the covered area of the voxel's
+// columns and the bits of the dominant axes that cross it (EDGE_COVERAGE); with sheet, the
+// span's two maxima (EDGE_SHEETS). GL guarantees 8 image units, so no pass binds them all as
+// images: the geometry pass of voxelize.glsl binds accumulator k at image unit k (k <
+// VOX_ACC_EMISSION), the emission pass binds k at image unit k - VOX_ACC_EMISSION, the
+// coverage pass k at k - VOX_ACC_COVERAGE, and resolve.glsl reads those below VOX_ACC_SHEET_LO
+// through texture unit k (texelFetch; at most 16 of the 16 a stage is guaranteed), writing its
+// outputs to the image units below; voxelize_sheets.glsl reads the axes and the span.
 VCT_CONST int VOX_ACC_ALBEDO = 0;
 VCT_CONST int VOX_ACC_NORMAL = 3;
 VCT_CONST int VOX_ACC_WEIGHT = 6;
@@ -38,12 +39,18 @@ VCT_CONST int VOX_ACC_TWO_SIDED = 7;
 VCT_CONST int VOX_ACC_EMISSION = 8;
 VCT_CONST int VOX_ACC_COVERAGE = 14;
 VCT_CONST int VOX_ACC_AXES = 15;
-VCT_CONST int VOX_ACC_COUNT = 16;
+VCT_CONST int VOX_ACC_SHEET_LO = 16;  // vct.voxel.edges=sheet: VOX_SHEET_STEPS + 1 - the span's low end
+VCT_CONST int VOX_ACC_SHEET_HI = 17;  // and its high end (vox_sheetSpanFixed)
+VCT_CONST int VOX_ACC_COUNT = 18;
 VCT_CONST int VOX_IMAGE_RESOLVE_OPACITY = 0;
 VCT_CONST int VOX_IMAGE_RESOLVE_ALBEDO = 1;
 VCT_CONST int VOX_IMAGE_RESOLVE_NORMAL = 2;
 VCT_CONST int VOX_IMAGE_RESOLVE_EMISSION = 3;
 VCT_CONST int VOX_IMAGE_RESOLVE_TWO_SIDED = 4;
+// voxelize_sheets.glsl (vct.voxel.edges=sheet): its output image, and the texture unit of the
+// resolved opacity it reads (the accumulators keep theirs).
+VCT_CONST int VOX_IMAGE_SHEETS = 0;
+VCT_CONST int VOX_UNIT_SHEETS_OPACITY = 18;
 
 // Storage binding of the big-triangle list: uvec4 header {listed triangles, -, -, occupied
 // voxel count}, then triangle ids.
@@ -89,9 +96,15 @@ VCT_CONST float VOX_EMISSION_MAX = 1.0e9;
 VCT_CONST float VOX_COVERAGE_SCALE = 65536.0f;
 VCT_CONST float VOX_COVERAGE_STEPS = 1024.0f;
 
+// The dominant axis of a voxel whose surfaces have one (axes = 1, 2 or 4).
+VOX_FN int vox_singleAxis(uint axes) { return axes == 1u ? 0 : (axes == 2u ? 1 : 2); }
+
 // Area of the triangle (a, b, c), projected to 2D, inside the unit square at `lo`: the
-// triangle clipped by the square's four sides (Sutherland-Hodgman), then the shoelace sum.
-VOX_FN float vox_columnCoverage(vec2 a, vec2 b, vec2 c, vec2 lo) {
+// triangle clipped by the square's four sides (Sutherland-Hodgman), then the shoelace sum;
+// and (vct.voxel.edges=sheet) the lowest and highest value over that clipped part of the plane
+// height z = (plane.w - plane.x u - plane.y v) / plane.z (the triangle's plane, solved for its
+// dominant axis): returns (area, zMin, zMax).
+VOX_FN vec3 vox_columnCoverageSpan(vec2 a, vec2 b, vec2 c, vec2 lo, vec4 plane) {
     vec2 poly[7];
     vec2 next[7];
     poly[0] = a - lo;
@@ -114,19 +127,46 @@ VOX_FN float vox_columnCoverage(vec2 a, vec2 b, vec2 c, vec2 lo) {
         for (int k = 0; k < n; ++k) poly[k] = next[k];
     }
     float twiceArea = 0.0f;
+    float zMin = 3.4e38f, zMax = -3.4e38f;
     for (int k = 0; k < n; ++k) {
         vec2 u = poly[k];
         vec2 v = poly[(k + 1) % n];
         twiceArea += u.x * v.y - v.x * u.y;
+        if (plane.z != 0.0f) {
+            float z = (plane.w - plane.x * (u.x + lo.x) - plane.y * (u.y + lo.y)) / plane.z;
+            zMin = min(zMin, z);
+            zMax = max(zMax, z);
+        }
     }
-    return min(0.5f * max(twiceArea, -twiceArea), 1.0f);
+    return vec3(min(0.5f * max(twiceArea, -twiceArea), 1.0f), zMin, zMax);
+}
+
+VOX_FN float vox_columnCoverage(vec2 a, vec2 b, vec2 c, vec2 lo) {
+    return vox_columnCoverageSpan(a, b, c, lo, vec4(0.0f)).x;
+}
+
+// vct.voxel.edges=sheet: where in its voxel a sheet lies. Each triangle that covers part of a
+// voxel's column adds the span of its plane over that part (vox_columnCoverageSpan), relative
+// to voxel k along the axis and clamped to it, in steps of 1 / VOX_SHEET_STEPS rounded
+// outwards; the voxel keeps the lowest and the highest (two atomic maxima: VOX_SHEET_STEPS + 1 -
+// lo, hi; zero-initialised accumulators read as no span). Exact in half floats.
+VCT_CONST float VOX_SHEET_STEPS = 1024.0f;
+VOX_FN uvec2 vox_sheetSpanFixed(vec2 zSpan, float k) {
+    float lo = clamp(zSpan.x - k, 0.0f, 1.0f), hi = clamp(zSpan.y - k, 0.0f, 1.0f);
+    return uvec2(uint(VOX_SHEET_STEPS + 1.0f - floor(lo * VOX_SHEET_STEPS)), uint(ceil(hi * VOX_SHEET_STEPS)));
+}
+// The base level's sheet texel (cone_sampleSheets): (opacity, lo, hi, axis) where the voxel's
+// surfaces share one dominant axis and left a span, else (opacity, 0, 0, -1).
+VOX_FN vec4 vox_sheetTexel(float opacity, uint axes, uint loInv, uint hi) {
+    float lo = (VOX_SHEET_STEPS + 1.0f - float(loInv)) / VOX_SHEET_STEPS;
+    float top = float(hi) / VOX_SHEET_STEPS;
+    bool sheet = axes != 0u && (axes & (axes - 1u)) == 0u && loInv > 0u && lo <= top;
+    return sheet ? vec4(opacity, lo, top, float(vox_singleAxis(axes))) : vec4(opacity, 0.0f, 0.0f, -1.0f);
 }
 
 // One triangle's covered area in fixed point.
 VOX_FN uint vox_coverageFixed(float area) { return uint(floor(area * VOX_COVERAGE_SCALE + 0.5f)); }
 
-// The dominant axis of a voxel whose surfaces have one (axes = 1, 2 or 4).
-VOX_FN int vox_singleAxis(uint axes) { return axes == 1u ? 0 : (axes == 2u ? 1 : 2); }
 
 // A voxel's opacity from its axis bits and the coverage sums of the voxel (`here`) and of its
 // two neighbours along its axis (0 where unoccupied); 0 when no triangle crossed it.

@@ -113,6 +113,10 @@ bool readsDepthLevels(const VoxelGrid& grid, ConeDirectional directional) {
     return grid.depthLevels && directional != ConeDirectional::None;
 }
 
+bool readsSheets(bool gi, const VoxelGrid& grid, ConeDirectional directional) {
+    return !gi && grid.sheets && directional != ConeDirectional::None;
+}
+
 bool readsSharpened(const ConeSettings& settings, ConeDirectional directional) {
     return sharpensLevels(settings) && directional != ConeDirectional::None;
 }
@@ -124,6 +128,7 @@ ConeDirectional bindGridTextures(bool gi, const VoxelGrid& grid, const ConeSetti
     if (directional == ConeDirectional::Six)
         for (int i = 0; i < 6; ++i) glBindTextureUnit(gpu::CONE_UNIT_ANISO + i, grid.anisoRadiance[i].id());
     if (directional == ConeDirectional::Packed) glBindTextureUnit(gpu::CONE_UNIT_ANISO, grid.anisoOpacity.id());
+    if (readsSheets(gi, grid, directional)) glBindTextureUnit(gpu::CONE_UNIT_SHEETS, grid.sheets.id());
     return directional;
 }
 
@@ -137,6 +142,7 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
     bound.directional = bindGridTextures(gi, grid, settings);
     bound.depthLevels = readsDepthLevels(grid, bound.directional);
     bound.sharpen = readsSharpened(settings, bound.directional);
+    bound.sheets = readsSheets(gi, grid, bound.directional);
     bound.slices = coneSlices(u, settings, denseLoopsPerStep(settings));
     return bound;
 }

@@ -7,8 +7,9 @@ namespace vct {
 
 namespace {
 ShaderDefines coneDefines(bool gi, bool aniso) { return {{"CONE_GI", gi ? "1" : "0"}, {"CONE_ANISO", aniso ? "1" : "0"}}; }
-ShaderDefines coneDefines(bool gi, ConeDirectional directional, bool depthLevels, bool sharpen) {
+ShaderDefines coneDefines(bool gi, ConeDirectional directional, bool depthLevels, bool sharpen, bool sheets = false) {
     ShaderDefines d = coneDefines(gi, directional != ConeDirectional::None);
+    if (sheets && !gi && directional != ConeDirectional::None) d.push_back({"CONE_SHEETS", "1"});
     if (directional == ConeDirectional::Packed) d.push_back({"CONE_ANISO_PACKED", "1"});
     if (depthLevels && directional != ConeDirectional::None) d.push_back({"CONE_DEPTH_LEVELS", "1"});
     if (sharpen && directional != ConeDirectional::None) d.push_back({"CONE_SHARPEN", "1"});
@@ -16,9 +17,9 @@ ShaderDefines coneDefines(bool gi, ConeDirectional directional, bool depthLevels
 }
 }  // namespace
 
-ProgramKey conePassProgramKey(bool gi, ConeDirectional directional, bool depthLevels, bool sharpen) {
+ProgramKey conePassProgramKey(bool gi, ConeDirectional directional, bool depthLevels, bool sharpen, bool sheets) {
     return computeProgramKey(gi ? "cone/cone_gi.glsl" : "cone/cone_ao.glsl",
-                             coneDefines(gi, directional, depthLevels, sharpen));
+                             coneDefines(gi, directional, depthLevels, sharpen, sheets));
 }
 
 ProgramKey clipmapConePassProgramKey(bool gi) {
@@ -52,8 +53,8 @@ ProgramKey voxelViewProgramKey(int channel) {
     return computeProgramKey("cone/cone_raymarch.glsl", d);
 }
 
-ProgramKey coneCountProgramKey(bool gi, ConeDirectional directional, bool depthLevels, bool sharpen) {
-    return computeProgramKey("bench/cone_count.glsl", coneDefines(gi, directional, depthLevels, sharpen));
+ProgramKey coneCountProgramKey(bool gi, ConeDirectional directional, bool depthLevels, bool sharpen, bool sheets) {
+    return computeProgramKey("bench/cone_count.glsl", coneDefines(gi, directional, depthLevels, sharpen, sheets));
 }
 
 ProgramKey fetchBenchProgramKey() { return computeProgramKey("bench/fetch.glsl"); }
@@ -69,8 +70,11 @@ std::vector<ProgramKey> coneProgramVariants() {
                 for (bool sharpen : {false, true}) {
                     // Depth and the sharpened filter live in directional levels.
                     if ((depth || sharpen) && d == ConeDirectional::None) continue;
-                    v.push_back(conePassProgramKey(gi, d, depth, sharpen));
-                    v.push_back(coneCountProgramKey(gi, d, depth, sharpen));
+                    for (bool sheets : {false, true}) {
+                        if (sheets && gi) continue;  // AO reads the sheets
+                        v.push_back(conePassProgramKey(gi, d, depth, sharpen, sheets));
+                        v.push_back(coneCountProgramKey(gi, d, depth, sharpen, sheets));
+                    }
                 }
         }
         v.push_back(clipmapConePassProgramKey(gi));

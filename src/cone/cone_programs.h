@@ -15,8 +15,10 @@ enum class ConeDirectional { None, Six, Packed };
 // cone_ao.glsl / cone_gi.glsl over one dense grid, with its directional levels or without;
 // `depthLevels`: the directional levels hold optical depth (VoxelGrid::depthLevels);
 // `sharpen`: they are read with vct.sharpen's filter (the CONE_SHARPEN variant). Both are
-// ignored without directional levels.
-ProgramKey conePassProgramKey(bool gi, ConeDirectional directional, bool depthLevels, bool sharpen);
+// ignored without directional levels; `sheets`: AO reads the base level's sheet texels
+// (VoxelGrid::sheets, the CONE_SHEETS variant; ignored for GI and without directional levels).
+ProgramKey conePassProgramKey(bool gi, ConeDirectional directional, bool depthLevels, bool sharpen,
+                              bool sheets = false);
 // The same over a clipmap's levels (isotropic).
 ProgramKey clipmapConePassProgramKey(bool gi);
 // The resolve stage of a reduced-resolution AO or GI pass (cone_resolve.glsl): one program
@@ -30,7 +32,8 @@ ProgramKey coneBounceProgramKey(bool aniso, GLenum radianceFormat, BouncePass pa
 // cone_raymarch.glsl: the voxel_* views; channel is gpu::CONE_CHANNEL_*.
 ProgramKey voxelViewProgramKey(int channel);
 // bench/: the cone pass with a fetch counter, and the bare trilinear-fetch shader.
-ProgramKey coneCountProgramKey(bool gi, ConeDirectional directional, bool depthLevels, bool sharpen);
+ProgramKey coneCountProgramKey(bool gi, ConeDirectional directional, bool depthLevels, bool sharpen,
+                               bool sheets = false);
 ProgramKey fetchBenchProgramKey();
 // cone_march_check.glsl: the shared march's functions on a buffer of inputs (the test that
 // holds the CPU tracer's march to the shaders').

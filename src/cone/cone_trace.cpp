@@ -35,7 +35,7 @@ GlTexture tracePass(ConeMode mode, const VoxelGrid& grid, const GBuffer& gbuffer
     const bool gi = mode == ConeMode::GI;
     BoundConePass bound = bindConePass(gi, grid, gbuffer, maxDistWorld, sky, settings);
     dispatches = bound.slices.count();
-    return dispatchPixelPass(cachedProgram(conePassProgramKey(gi, bound.directional, bound.depthLevels, bound.sharpen)), gi, gbuffer, counts, bound.ubo.id(),
+    return dispatchPixelPass(cachedProgram(conePassProgramKey(gi, bound.directional, bound.depthLevels, bound.sharpen, bound.sheets)), gi, gbuffer, counts, bound.ubo.id(),
                              settings.traceScale, bound.slices);
 }
 

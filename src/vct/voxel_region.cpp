@@ -48,8 +48,12 @@ std::string voxelRegionExplanation(const RenderRequest& r) {
         s << "; one dense grid of " << r.voxelRes << " voxels along its longest axis";
     if (vs.grid == "cube") s << ", padded to a cube (vct.grid=cube)";
     if (vs.gridShift != 0.f) s << ", moved by " << vs.gridShift << " voxel (vct.grid-shift)";
-    if (voxelSettings().read(r.params).edges == VoxelEdges::Coverage)
+    const VoxelEdges edges = voxelSettings().read(r.params).edges;
+    if (edges == VoxelEdges::Coverage)
         s << "; each voxel holds the share of its column its sheets cover (vct.voxel.edges=coverage)";
+    if (edges == VoxelEdges::Sheet)
+        s << "; each voxel holds the share of its column its sheets cover and where in it they lie "
+             "(vct.voxel.edges=sheet)";
     return s.str();
 }
 

@@ -60,6 +60,8 @@ struct LevelSampler {
     // Fetches of one directional sample: the dense AO grid's one texture of the three axes'
     // opacity (VoxelGrid::anisoOpacity), or a lit grid's three of its six RGBA textures.
     double directionalFetches = 3.0;
+    // Level 0's sheets (SparseVoxelScene::sheet), read by AO's base samples over directional levels.
+    std::unique_ptr<RadianceAcc> sheets;
 
     LevelSampler(const SparseVoxelScene& v, const MarchParams& params, bool gi)
         : mp(&params), depth(v.depthLevels), directionalFetches(v.injected() ? 3.0 : 1.0) {
@@ -68,6 +70,7 @@ struct LevelSampler {
             for (const auto& g : v.radianceLevels) radiance.push_back(std::make_unique<RadianceAcc>(g->tree()));
             for (const auto& g : v.normalLevels) normal.push_back(std::make_unique<RadianceAcc>(g->tree()));
         }
+        if (v.sheet && !gi && !v.directional[0].empty()) sheets = std::make_unique<RadianceAcc>(v.sheet->tree());
         for (size_t d = 0; d < 6; ++d)
             for (const auto& l : v.directional[d]) {
                 dirOpacity[d].push_back(std::make_unique<OpacityAcc>(l.opacity->tree()));
@@ -133,12 +136,28 @@ struct LevelSampler {
     // cone_sampleBase: the base level at a sample of direction d. With vct.sharpen, one fetch per
     // axis sharpened along that axis, blended as the directional levels' axes are
     // (cone_sampleBaseSharpened); else one trilinear fetch.
-    glm::vec4 sampleBase(const glm::vec3& p, const glm::vec3& d) {
+    glm::vec4 sampleBase(const glm::vec3& p, const glm::vec3& d, float lod, float dt) {
+        if (sheets) {
+            // vct.voxel.edges=sheet.
+            const float texel = std::exp2(std::max(lod, 0.f));
+            return glm::vec4(0.f, 0.f, 0.f, gpu::cone_sampleSheets(*this, p, d, dt, texel, mp->sharpen));
+        }
         if (!(mp->sharpen > 1.f)) return sampleLevel(p, 0);
         const openvdb::Vec3R xyz = levelCoord(p, 0);
         const glm::vec4 x = sampleLevelAt(sharpenAlong(xyz, 0), 0), y = sampleLevelAt(sharpenAlong(xyz, 1), 0),
                         z = sampleLevelAt(sharpenAlong(xyz, 2), 0);
         return gpu::cone_blendDirectional(gpu::cone_anisoWeights(d), x, y, z);
+    }
+
+    // gpu::cone_sampleSheets' texel of voxel v: (opacity, lo, hi, axis), axis -1 where v holds
+    // no sheet (zero outside the grid, as the dense grid's CONE_SHEETS variant reads it).
+    glm::vec4 sheet(const glm::ivec3& v) {
+        const openvdb::Coord ijk(v.x, v.y, v.z);
+        float opacity0 = 0.f;
+        opacity[0]->probeValue(ijk, opacity0);
+        openvdb::Vec3s span;
+        if (!sheets->probeValue(ijk, span)) return glm::vec4(opacity0, 0.f, 0.f, -1.f);
+        return glm::vec4(opacity0, span[0], span[1], span[2]);
     }
 
     // The fetches of one directional sample at footprint 2^lod: the textures' own (one or
@@ -167,19 +186,19 @@ struct LevelSampler {
     // textureLod: premultiplied radiance (GI) and opacity at footprint 2^lod. With directional
     // levels, cone_sampleGrid: below lod 1 the base level blended into the first directional
     // one, as trilinear filtering blends two mip levels.
-    glm::vec4 sample(const glm::vec3& p, const glm::vec3& d, float lod) {
+    glm::vec4 sample(const glm::vec3& p, const glm::vec3& d, float lod, float dt) {
         if (dirOpacity[0].empty()) {
             fetches += 1.0;
             return acrossLevels(lod, [&](int level) { return sampleLevel(p, level); });
         }
-        fetches += directionalSampleFetches(lod) + (lod < 1.f ? (mp->sharpen > 1.f ? 3.0 : 1.0) : 0.0);
+        fetches += directionalSampleFetches(lod) + (lod < 1.f ? (sheets ? 8.0 : mp->sharpen > 1.f ? 3.0 : 1.0) : 0.0);
         glm::vec4 directional = sampleAniso(p, d, lod);
         if (lod < 1.f) {
             if (depth)
-                directional = gpu::vox_alphaFromDepth(glm::mix(gpu::vox_depthFromCoverage(sampleBase(p, d)),
+                directional = gpu::vox_alphaFromDepth(glm::mix(gpu::vox_depthFromCoverage(sampleBase(p, d, lod, dt)),
                                                               gpu::vox_depthFromAlpha(directional), std::max(lod, 0.f)));
             else
-                directional = glm::mix(sampleBase(p, d), directional, std::max(lod, 0.f));
+                directional = glm::mix(sampleBase(p, d, lod, dt), directional, std::max(lod, 0.f));
         }
         return directional;
     }
@@ -254,10 +273,11 @@ Gather gatherVoxel(LevelSampler& sampler, const glm::vec3& p,
             }
             d = gpu::cone_mirrored(d, ng);  // vct.below-plane=mirror
         }
-        // vct.aim: towards the point the lane's ray from p reaches at maxDist.
+        // vct.aim: towards the point the lane's ray from p reaches at maxDist, and as far as it.
         const glm::vec3 marched = mp.aim ? gpu::cone_aimedDirection(d, ng, offset, maxDist) : d;
+        const float reach = mp.aim ? gpu::cone_aimedReach(d, ng, offset, maxDist) : maxDist;
         const gpu::ConeResult r =
-            gpu::cone_marchVolume(sampler, sampler.mp->march, origin, marched, h0, glm::dot(marched, ng), maxDist, falloff);
+            gpu::cone_marchVolume(sampler, sampler.mp->march, origin, marched, h0, glm::dot(marched, ng), reach, falloff);
         g.radiance += cone.w * (r.radiance + (1.f - r.alpha) * sky);
         g.occlusion += cone.w * r.alpha;
         g.samples += r.samples;

@@ -252,6 +252,7 @@ void updateSparseMemoryStats(SparseVoxelScene& voxels) {
     for (const auto* g : {&voxels.albedo, &voxels.normal, &voxels.emission, &voxels.facingNormal})
         if (*g) s.memoryBytes += size_t((*g)->memUsage());
     if (voxels.twoSided) s.memoryBytes += size_t(voxels.twoSided->memUsage());
+    if (voxels.sheet) s.memoryBytes += size_t(voxels.sheet->memUsage());
     // Dense equivalent of the same channels in float32: per level, opacity (4 B) and radiance
     // (12 B) when held; level 0 also albedo, normal and emission (12 B each), and with two-sided
     // voxels their share (4 B) and, once injected, the facing normals (12 B).
@@ -262,7 +263,7 @@ void updateSparseMemoryStats(SparseVoxelScene& voxels) {
                           (level > 0 && level < int(voxels.normalLevels.size()) ? 12 : 0);
         if (level == 0)
             perVoxel += (voxels.albedo ? 12 : 0) + (voxels.normal ? 12 : 0) + (voxels.emission ? 12 : 0) +
-                        (voxels.twoSided ? 4 : 0) + (voxels.facingNormal ? 12 : 0);
+                        (voxels.twoSided ? 4 : 0) + (voxels.facingNormal ? 12 : 0) + (voxels.sheet ? 12 : 0);
         s.denseBytes += product(voxels.levelSize(level)) * perVoxel;
         s.denseCubeBytes += product(glm::ivec3(std::max(maxRes >> level, 1))) * perVoxel;
     }
@@ -283,7 +284,8 @@ SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject
     const BounceSettings bounce = bounceSettings().read(params);
     SparseVoxelScene voxels = voxelizeSparse(scene, options.region.empty() ? scene.bounds : options.region,
                                              voxelRes, inject, options.attributes,
-                                             voxelOptions.edges == VoxelEdges::Coverage);
+                                             voxelOptions.edges != VoxelEdges::Occupied,
+                                             voxelOptions.edges == VoxelEdges::Sheet);
     if (inject) {
         injectSparseRadiance(voxels, scene, offset);
         // The bounces trace with the pixel cones' settings, as the GPU path's.
@@ -303,6 +305,7 @@ SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject
     for (auto* g : {&voxels.albedo, &voxels.normal, &voxels.emission})
         if (*g) openvdb::tools::prune((*g)->tree());
     if (voxels.twoSided) openvdb::tools::prune(voxels.twoSided->tree());
+    if (voxels.sheet) openvdb::tools::prune(voxels.sheet->tree());
     updateSparseMemoryStats(voxels);
     return voxels;
 }

@@ -51,6 +51,7 @@ struct VoxelSums {
     uint64_t emission[3] = {0, 0, 0};
     uint64_t coverage = 0;  // vox_columnCoverage's fixed-point areas (edge coverage)
     uint32_t axes = 0;      // bit a: a triangle of dominant axis a crosses the voxel (edge coverage)
+    uint32_t sheetLo = 0, sheetHi = 0;  // vox_sheetSpanFixed's maxima (vct.voxel.edges=sheet)
 
     void add(const VoxelSums& t) {
         for (int c = 0; c < 3; ++c) {
@@ -62,6 +63,8 @@ struct VoxelSums {
         twoSidedWeight += t.twoSidedWeight;
         coverage += t.coverage;
         axes |= t.axes;
+        sheetLo = std::max(sheetLo, t.sheetLo);
+        sheetHi = std::max(sheetHi, t.sheetHi);
     }
 };
 
@@ -73,6 +76,7 @@ struct ThreadSums {
     std::vector<VoxelSums> sums;
     bool attributes = true;
     bool edgeCoverage = false;
+    bool sheets = false;  // vct.voxel.edges=sheet: the span of each voxel's sheet too
 };
 
 // A voxel's sums over every thread's share; `threadLeaves[k]` is thread k's leaf holding it.
@@ -136,7 +140,7 @@ glm::vec3 barycentrics(const Tri& tri, const glm::vec3& q) {
 // vox_accumulate: adds the triangle's fixed-point attributes at voxel v, and with edge coverage
 // `coverage`, its column's covered area in fixed point, and its dominant axis.
 void accumulate(const Scene& scene, const Tri& tri, const glm::ivec3& v, ThreadSums& ts,
-                openvdb::tree::ValueAccessor<openvdb::Int32Tree>& acc, uint32_t coverage) {
+                openvdb::tree::ValueAccessor<openvdb::Int32Tree>& acc, uint32_t coverage, glm::vec2 sheetZ) {
     const glm::vec3 b = barycentrics(tri, glm::vec3(v) + 0.5f);
     const glm::vec2 uv = b.x * tri.uv[0] + b.y * tri.uv[1] + b.z * tri.uv[2];
     const glm::vec4 color = vertexColorAt(scene, tri.index, b);
@@ -159,6 +163,11 @@ void accumulate(const Scene& scene, const Tri& tri, const glm::ivec3& v, ThreadS
     if (ts.edgeCoverage) {
         s.coverage += coverage;
         s.axes |= 1u << tri.axis;
+        if (ts.sheets && coverage > 0u) {
+            const glm::uvec2 span = gpu::vox_sheetSpanFixed(sheetZ, float(v[tri.axis]));
+            s.sheetLo = std::max(s.sheetLo, span.x);
+            s.sheetHi = std::max(s.sheetHi, span.y);
+        }
     }
     if (!ts.attributes) return;
     const glm::vec3 albedo =
@@ -201,18 +210,23 @@ void voxelizeColumn(const Scene& scene, const Tri& tri, int i, int j, ThreadSums
         kLo = std::max(kLo, int(std::floor(zMin)) - 1);
         kHi = std::min(kHi, int(std::floor(zMax)) + 1);
     }
-    const uint32_t coverage =
-        ts.edgeCoverage ? gpu::vox_coverageFixed(gpu::vox_columnCoverage(glm::vec2(tri.p[0][a], tri.p[0][b]),
-                                                                         glm::vec2(tri.p[1][a], tri.p[1][b]),
-                                                                         glm::vec2(tri.p[2][a], tri.p[2][b]),
-                                                                         glm::vec2(float(i), float(j))))
-                        : 0u;
+    // vox_columnCoverageSpan: the column's covered area, and with sheets the plane's span over it.
+    const glm::vec4 plane = ts.sheets ? glm::vec4(n[a], n[b], n[d], glm::dot(n, tri.p[0])) : glm::vec4(0.f);
+    const glm::vec3 areaSpan =
+        ts.edgeCoverage ? gpu::vox_columnCoverageSpan(glm::vec2(tri.p[0][a], tri.p[0][b]),
+                                                      glm::vec2(tri.p[1][a], tri.p[1][b]),
+                                                      glm::vec2(tri.p[2][a], tri.p[2][b]), glm::vec2(float(i), float(j)),
+                                                      plane)
+                        : glm::vec3(0.f);
+    const uint32_t coverage = ts.edgeCoverage ? gpu::vox_coverageFixed(areaSpan.x) : 0u;
+    const glm::vec2 sheetZ(areaSpan.y, areaSpan.z);
     for (int k = kLo; k <= kHi; ++k) {
         glm::ivec3 v;
         v[a] = i;
         v[b] = j;
         v[d] = k;
-        if (triangleOverlapsVoxel(tri.p, tri.faceN, glm::vec3(v) + 0.5f)) accumulate(scene, tri, v, ts, acc, coverage);
+        if (triangleOverlapsVoxel(tri.p, tri.faceN, glm::vec3(v) + 0.5f))
+            accumulate(scene, tri, v, ts, acc, coverage, sheetZ);
     }
 }
 
@@ -247,8 +261,9 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, int voxelRes) {
 }
 
 SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int voxelRes, bool lit, bool attributes,
-                                bool edgeCoverage) {
+                                bool edgeCoverage, bool sheets) {
     ensureOpenVdb();
+    edgeCoverage = edgeCoverage || sheets;  // sheets are read where coverage sets the opacity
     checkScene(scene);
     attributes = attributes || lit;  // injection reads them
     const auto t0 = std::chrono::steady_clock::now();
@@ -272,6 +287,7 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
                               ts = std::make_unique<ThreadSums>();
                               ts->attributes = attributes;
                               ts->edgeCoverage = edgeCoverage;
+                              ts->sheets = sheets;
                           }
                           openvdb::tree::ValueAccessor<openvdb::Int32Tree> acc(ts->slots);
                           Tri tri;
@@ -309,6 +325,14 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
         // vox_edgeOpacity of the voxel's and its neighbours' sums along its axis.
         openvdb::UInt32Tree coverage(topology, 0u, openvdb::TopologyCopy());
         openvdb::UInt32Tree axes(topology, 0u, openvdb::TopologyCopy());
+        // vct.voxel.edges=sheet: (lo, hi, axis) of vox_sheetTexel where the voxel holds a sheet,
+        // inactive elsewhere.
+        std::shared_ptr<openvdb::Vec3STree> sheet;
+        std::unique_ptr<openvdb::tree::LeafManager<openvdb::Vec3STree>> sheetLeaves;
+        if (sheets) {
+            sheet = std::make_shared<openvdb::Vec3STree>(topology, openvdb::Vec3s(0.f), openvdb::TopologyCopy());
+            sheetLeaves = std::make_unique<openvdb::tree::LeafManager<openvdb::Vec3STree>>(*sheet);
+        }
         openvdb::tree::LeafManager<openvdb::UInt32Tree> coverageLeaves(coverage), axesLeaves(axes);
         tbb::parallel_for(tbb::blocked_range<size_t>(0, coverageLeaves.leafCount()),
                           [&](const tbb::blocked_range<size_t>& r) {
@@ -320,6 +344,13 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
                                       const VoxelSums s = sumsAt(threads, leaves, it.pos());
                                       it.setValue(uint32_t(std::min<uint64_t>(s.coverage, UINT32_MAX)));
                                       axesLeaf.setValueOnly(it.pos(), s.axes);
+                                      if (!sheetLeaves) continue;
+                                      const glm::vec4 texel = gpu::vox_sheetTexel(0.f, s.axes, s.sheetLo, s.sheetHi);
+                                      auto& sheetLeaf = sheetLeaves->leaf(li);
+                                      if (texel.w >= 0.f)
+                                          sheetLeaf.setValueOnly(it.pos(), openvdb::Vec3s(texel.y, texel.z, texel.w));
+                                      else
+                                          sheetLeaf.setValueOff(it.pos(), openvdb::Vec3s(0.f));
                                   }
                               }
                           });
@@ -339,6 +370,7 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
                                   }
                               }
                           });
+        if (sheet) out.sheet = makeGrid(sheet, "sheet");
     }
     if (!attributes) {
         // Opacity alone: the occupied set is the whole answer.

@@ -62,6 +62,10 @@ struct SparseVoxelScene {
     // Level 0, present when a material is doubleSided: the share of each voxel's weight whose
     // material is doubleSided (two-sided voxels: shaders/voxelize/voxelize_shared.h).
     openvdb::FloatGrid::Ptr twoSided;
+    // Level 0, vct.voxel.edges=sheet: (lo, hi, axis) of each voxel whose surfaces share one
+    // dominant axis, their span along it inside the voxel ([0, 1]); inactive elsewhere
+    // (vox_sheetTexel; read with the opacity by gpu::cone_sampleSheets).
+    openvdb::Vec3SGrid::Ptr sheet;
     // Level 0, set by injection when the scene has two-sided voxels: `normal`, with each
     // two-sided voxel's facing normal in place of its own (the GPU rewrites its normal texture).
     openvdb::Vec3SGrid::Ptr facingNormal;
@@ -125,9 +129,10 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, int voxelRes);
 // only injection reads (voxelizeGrid's `lit`). `attributes` false and not `lit` (AO): opacity
 // alone, no albedo, normal or emission grids, and no per-voxel sums while voxelizing (the
 // same opacity: level 0 is 1 on every occupied voxel). `edgeCoverage` (vct.voxel.edges=coverage):
-// level 0 holds the share of each voxel's column its sheets cover (vox_edgeOpacity).
+// level 0 holds the share of each voxel's column its sheets cover (vox_edgeOpacity); `sheets`
+// (vct.voxel.edges=sheet): that, and `sheet`, where in its voxel each sheet lies.
 SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int voxelRes, bool lit = true,
-                                bool attributes = true, bool edgeCoverage = false);
+                                bool attributes = true, bool edgeCoverage = false, bool sheets = false);
 void injectSparseRadiance(SparseVoxelScene& voxels, const Scene& scene, float shadowOffsetVoxels);
 void buildSparseLevels(SparseVoxelScene& voxels, bool anisotropic = false, bool depthLevels = false);
 // Recomputes stats.memoryBytes / denseBytes / activeVoxels from the grids held.

@@ -87,7 +87,8 @@ size_t textureBytes(const GlTexture& t) {
 
 size_t voxelGridMemoryBytes(const VoxelGrid& g) {
     size_t total = textureBytes(g.opacity) + textureBytes(g.albedo) + textureBytes(g.normal) +
-                   textureBytes(g.emission) + textureBytes(g.radiance) + textureBytes(g.twoSided);
+                   textureBytes(g.emission) + textureBytes(g.radiance) + textureBytes(g.twoSided) +
+                   textureBytes(g.sheets);
     for (const GlTexture& t : g.anisoRadiance) total += textureBytes(t);
     total += textureBytes(g.anisoOpacity);
     return total;

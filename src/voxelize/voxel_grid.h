@@ -46,6 +46,9 @@ struct VoxelGrid {
     // GL_RGBA16_SNORM, level 0 only, present when a material is doubleSided: the unit normal
     // (xyz, the winding side) and the doubleSided share of the voxel's weight (a).
     GlTexture twoSided;
+    // GL_RGBA16F, level 0 only, present with vct.voxel.edges=sheet: the sheet texels (opacity,
+    // lo, hi, axis) that AO cones read at the base level (vox_sheetTexel, cone_sampleSheets).
+    GlTexture sheets;
     GlTexture radiance;  // GL_RGBA16F, 3D, mipmapped, premultiplied; empty until injection
     bool anisotropic = false;
     std::array<GlTexture, 6> anisoRadiance;  // see above; empty unless anisotropic and lit

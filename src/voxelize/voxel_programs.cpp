@@ -4,9 +4,10 @@
 
 namespace vct {
 
-ProgramKey voxelizeProgramKey(VoxelizePass pass, bool bigPass, bool twoSided, bool opacityOnly) {
+ProgramKey voxelizeProgramKey(VoxelizePass pass, bool bigPass, bool twoSided, bool opacityOnly, bool sheets) {
     ShaderDefines d;
     if (bigPass) d.push_back({"BIG_PASS", "1"});
+    if (sheets && pass == VoxelizePass::Coverage) d.push_back({"EDGE_SHEETS", "1"});
     const bool geometry = pass == VoxelizePass::Geometry;
     if (twoSided && geometry && !opacityOnly) d.push_back({"TWO_SIDED", "1"});
     if (opacityOnly && geometry) d.push_back({"OPACITY_ONLY", "1"});
@@ -32,6 +33,8 @@ ProgramKey resolveProgramKey(bool hasEmission, GLenum emissionFormat, bool twoSi
     d.push_back({"EMISSION_FORMAT_MAX", formatMaxLiteral(emissionFormat)});
     return computeProgramKey("voxelize/resolve.glsl", d);
 }
+
+ProgramKey sheetsProgramKey() { return computeProgramKey("voxelize/voxelize_sheets.glsl"); }
 
 ProgramKey injectProgramKey(GLenum radianceFormat, int outerLevels, bool twoSided, bool lightBatches) {
     ShaderDefines d = {{"RADIANCE_FORMAT", glslImageFormat(radianceFormat)},
@@ -66,7 +69,7 @@ std::vector<ProgramKey> voxelProgramVariants() {
     const GLenum radianceFormats[] = {GL_RGBA16F, GL_RGBA32F};
     for (bool big : {false, true}) {
         v.push_back(voxelizeProgramKey(VoxelizePass::Emission, big, false));
-        v.push_back(voxelizeProgramKey(VoxelizePass::Coverage, big, false));
+        for (bool sheets : {false, true}) v.push_back(voxelizeProgramKey(VoxelizePass::Coverage, big, false, false, sheets));
         for (bool twoSided : {false, true}) v.push_back(voxelizeProgramKey(VoxelizePass::Geometry, big, twoSided));
         v.push_back(voxelizeProgramKey(VoxelizePass::Geometry, big, false, true));
     }
@@ -76,6 +79,7 @@ std::vector<ProgramKey> voxelProgramVariants() {
             for (GLenum f : radianceFormats)
                 for (bool twoSided : {false, true}) v.push_back(resolveProgramKey(emission, f, twoSided, false, coverage));
     }
+    v.push_back(sheetsProgramKey());
     for (GLenum f : radianceFormats)
         for (int outer = 0; outer <= 7; ++outer)
             for (bool twoSided : {false, true})

@@ -16,7 +16,11 @@ enum class VoxelizePass {
 };
 // One accumulation pass, small or big-triangle; the geometry pass sums the doubleSided weight
 // when `twoSided`, and only the weight when `opacityOnly` (an AO grid).
-ProgramKey voxelizeProgramKey(VoxelizePass pass, bool bigPass, bool twoSided, bool opacityOnly = false);
+// `sheets`: the coverage pass also keeps each voxel's sheet span (vct.voxel.edges=sheet).
+ProgramKey voxelizeProgramKey(VoxelizePass pass, bool bigPass, bool twoSided, bool opacityOnly = false,
+                              bool sheets = false);
+// voxelize_sheets.glsl: level 0's sheet texels (vct.voxel.edges=sheet).
+ProgramKey sheetsProgramKey();
 // resolve.glsl: reads the emission accumulators when the scene has emission; writes emission
 // in `emissionFormat` (GL_RGBA16F or GL_RGBA32F); `twoSided`: the two-sided texture too;
 // `opacityOnly`: opacity alone (an AO grid); `edgeCoverage`: opacity from the coverage pass.

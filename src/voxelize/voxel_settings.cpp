@@ -17,11 +17,19 @@ const SettingsTable<VoxelSettings>& voxelSettings() {
                      "light's shadow walk can cross the grid). The dispatches carry their sums, so the radiance is "
                      "the same for any value (dense grid)")
             .choice("vct.voxel.edges", &VoxelSettings::edges,
-                    {{"occupied", VoxelEdges::Occupied}, {"coverage", VoxelEdges::Coverage}},
+                    {{"occupied", VoxelEdges::Occupied},
+                     {"coverage", VoxelEdges::Coverage},
+                     {"sheet", VoxelEdges::Sheet}},
                     "level 0's opacity: occupied = 1 on every voxel a triangle overlaps (a sheet's edge stands up to "
                     "a voxel past it); coverage = the share of the voxel's column covered by the sheets crossing "
                     "it when they share one dominant axis (1 where sheets of two axes meet, so rooms stay closed), "
-                    "which puts a sheet's edge where it is. Both backends");
+                    "which puts a sheet's edge where it is; sheet = coverage, and the span of each such voxel's "
+                    "sheets along their axis, where AO cones on directional levels meet them at the base level "
+                    "(a sample sees a sheet only if its step crosses it, not a voxel early, nor through the tent "
+                    "beside it: 6 cones in auto lanes of base 16, sharpened, aimed, bias -2, the 16 open "
+                    "off-screen cases, mean voxel error at 256^3 0.0074 -> 0.0042, the per-doubling rule in 10 -> 15, "
+                    "16 of 16 pooled over five alignments; 8 "
+                    "fetches a base sample, 8 more bytes a voxel). Both backends");
     return table;
 }
 

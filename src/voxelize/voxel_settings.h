@@ -12,8 +12,10 @@ enum class VoxelPrecision { Auto, Half, Float };
 
 // Level 0's opacity: 1 on every voxel a triangle overlaps (occupied), or the share of the
 // voxel's column its sheets cover where they are of one dominant axis (coverage;
-// vox_edgeOpacity in shaders/voxelize/voxelize_shared.h).
-enum class VoxelEdges { Occupied, Coverage };
+// vox_edgeOpacity in shaders/voxelize/voxelize_shared.h); or that, and where in its voxel each
+// sheet lies, which the AO cones read at the base level of directional grids (sheet;
+// vox_sheetTexel, cone_sampleSheets in shaders/cone/cone_march_shared.h).
+enum class VoxelEdges { Occupied, Coverage, Sheet };
 
 struct VoxelSettings {
     VoxelPrecision precision = VoxelPrecision::Auto;

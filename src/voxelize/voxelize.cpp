@@ -123,11 +123,13 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     // measured at 512x257x512 (stability suite); lit grids of scenes with doubleSided materials
     // add the doubleSided weight (4) and the two-sided texture (8); a grid of opacity alone
     // (no attributes) about 16 (the weight, opacity and directional levels); edge coverage adds
-    // its two accumulators (8).
+    // its two accumulators (8), sheets two more and their texture (16).
     const VoxelSettings voxelOptions = voxelSettings().read(params);
-    const bool edgeCoverage = voxelOptions.edges == VoxelEdges::Coverage;
+    const bool edgeCoverage = voxelOptions.edges != VoxelEdges::Occupied;
+    const bool sheets = voxelOptions.edges == VoxelEdges::Sheet;
     const double voxels = double(grid.resolution.x) * grid.resolution.y * grid.resolution.z;
-    const double bytesPerVoxel = (!attributes ? 16.0 : twoSided ? 78.0 : 66.0) + (edgeCoverage ? 8.0 : 0.0);
+    const double bytesPerVoxel =
+        (!attributes ? 16.0 : twoSided ? 78.0 : 66.0) + (edgeCoverage ? 8.0 : 0.0) + (sheets ? 16.0 : 0.0);
     const double needBytes = bytesPerVoxel * voxels, haveBytes = double(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
     if (haveBytes > 0.0 && needBytes > 0.5 * haveBytes)
         throw std::runtime_error(gridRefusal(grid, "needs about " + std::to_string(int(needBytes / 1e9)) +
@@ -151,10 +153,13 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     };
     std::vector<AccumulatePass> passes = {{VoxelizePass::Geometry, 0, gpu::VOX_ACC_EMISSION, {}}};
     if (hasEmission) passes.push_back({VoxelizePass::Emission, gpu::VOX_ACC_EMISSION, gpu::VOX_ACC_COVERAGE, {}});
-    if (edgeCoverage) passes.push_back({VoxelizePass::Coverage, gpu::VOX_ACC_COVERAGE, gpu::VOX_ACC_COUNT, {}});
+    if (edgeCoverage)
+        passes.push_back({VoxelizePass::Coverage, gpu::VOX_ACC_COVERAGE,
+                          sheets ? gpu::VOX_ACC_COUNT : gpu::VOX_ACC_SHEET_LO, {}});
     for (AccumulatePass& p : passes)
         for (int big = 0; big < 2; ++big)
-            p.program[big] = cachedProgram(voxelizeProgramKey(p.pass, big != 0, twoSided, !attributes));
+            p.program[big] = cachedProgram(voxelizeProgramKey(p.pass, big != 0, twoSided, !attributes, sheets));
+    const GLuint sheetsProgram = sheets ? cachedProgram(sheetsProgramKey()) : 0;
 
     auto scope = timer.scope(scopeName, true, Reruns::WhenSceneChanges);
     const glm::ivec3 res = grid.resolution;
@@ -163,6 +168,7 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     // the scene does not need (emission, the doubleSided weight) stay empty.
     std::vector<GlTexture> acc(size_t(gpu::VOX_ACC_COUNT));
     auto needed = [&](int i) {
+        if (i >= gpu::VOX_ACC_SHEET_LO) return sheets;
         if (i >= gpu::VOX_ACC_COVERAGE) return edgeCoverage;
         if (!attributes) return i == gpu::VOX_ACC_WEIGHT;
         if (i == gpu::VOX_ACC_TWO_SIDED) return twoSided;
@@ -226,6 +232,19 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     uint32_t occupied = 0;
     glGetNamedBufferSubData(bigList.id(), 3 * sizeof(uint32_t), sizeof(uint32_t), &occupied);
     grid.occupiedVoxels = occupied;
+
+    if (sheets) {
+        // Level 0's sheet texels from the resolved opacity and the coverage pass's sums.
+        grid.sheets = createTexture3D(GL_RGBA16F, res.x, res.y, res.z);
+        refuseUnallocatedGrid(grid);
+        glBindTextureUnit(gpu::VOX_UNIT_SHEETS_OPACITY, grid.opacity.id());
+        bindImage3D(gpu::VOX_IMAGE_SHEETS, grid.sheets.id(), 0, GL_WRITE_ONLY, GL_RGBA16F);
+        setUniform(sheetsProgram, "uResolution", res);
+        glUseProgram(sheetsProgram);
+        glDispatchCompute(groupCount(res.x, g), groupCount(res.y, g), groupCount(res.z, g));
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+        glBindTextureUnit(gpu::VOX_UNIT_SHEETS_OPACITY, 0);
+    }
 
     // Leave nothing bound to the (about to be freed) accumulators.
     for (int i = 0; i < gpu::VOX_ACC_COUNT; ++i) glBindTextureUnit(GLuint(i), 0);

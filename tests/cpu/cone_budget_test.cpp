@@ -18,7 +18,7 @@ namespace {
 struct EmptyVolume {
     float lod(float l, glm::vec3) const { return l; }
     bool leaving(glm::vec3, glm::vec3, float) const { return false; }
-    glm::vec4 sample(glm::vec3, glm::vec3, float) const { return glm::vec4(0.f); }
+    glm::vec4 sample(glm::vec3, glm::vec3, float, float) const { return glm::vec4(0.f); }
     float facing(glm::vec3, glm::vec3, float, glm::vec4) const { return 1.f; }
 };
 

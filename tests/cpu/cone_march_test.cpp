@@ -24,7 +24,7 @@ struct UniformMedium {
     glm::vec3 colour;
     float lod(float, glm::vec3) const { return 0.f; }
     bool leaving(glm::vec3, glm::vec3, float) const { return false; }
-    glm::vec4 sample(glm::vec3, glm::vec3, float) const { return glm::vec4(colour * alpha, alpha); }
+    glm::vec4 sample(glm::vec3, glm::vec3, float, float) const { return glm::vec4(colour * alpha, alpha); }
     float facing(glm::vec3, glm::vec3, float, glm::vec4) const { return 1.f; }
 };
 
@@ -112,7 +112,7 @@ struct RecordingVolume {
     std::vector<glm::vec4> samples;  // position, level
     float lod(float l, glm::vec3) const { return l; }
     bool leaving(glm::vec3, glm::vec3, float) const { return false; }
-    glm::vec4 sample(glm::vec3 p, glm::vec3, float l) {
+    glm::vec4 sample(glm::vec3 p, glm::vec3, float l, float) {
         samples.push_back(glm::vec4(p, l));
         return glm::vec4(0.f);
     }

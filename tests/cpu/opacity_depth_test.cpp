@@ -27,7 +27,7 @@ struct TexelRow {
         const float a = (i >= 0 && i < int(alpha.size())) ? alpha[size_t(i)] : 0.f;
         return asDepth ? gpu::vox_depthFromAlpha(glm::vec4(0.f, 0.f, 0.f, a)).w : a;
     }
-    glm::vec4 sample(glm::vec3 p, glm::vec3, float) const {
+    glm::vec4 sample(glm::vec3 p, glm::vec3, float, float) const {
         const float x = p.x - 0.5f;
         const int i = int(std::floor(x));
         const float f = x - float(i);

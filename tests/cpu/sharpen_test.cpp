@@ -52,7 +52,7 @@ struct SharpenedRow {
     float lod(float, glm::vec3) const { return 0.f; }
     bool leaving(glm::vec3, glm::vec3, float) const { return false; }
     float texel(int i) const { return (i >= 0 && i < int(alpha.size())) ? alpha[size_t(i)] : 0.f; }
-    glm::vec4 sample(glm::vec3 p, glm::vec3, float) const {
+    glm::vec4 sample(glm::vec3 p, glm::vec3, float, float) const {
         const float x = gpu::cone_sharpenTexel(p.x, s) - 0.5f;
         const int i = int(std::floor(x));
         const float f = x - float(i);

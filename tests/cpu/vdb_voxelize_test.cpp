@@ -295,6 +295,57 @@ TEST(VdbVoxelize, EdgeCoverageKeepsVoxelsWhereSheetsOfTwoAxesMeetOpaque) {
     EXPECT_NEAR(closed.opacity->tree().getValue(rim), 0.5, 1e-3);
 }
 
+// vct.voxel.edges=sheet: a voxel its sheets cross along one dominant axis holds their span along
+// it inside the voxel (vox_sheetSpanFixed, rounded outwards to 1/1024): a flat sheet's own height
+// in its voxel, a sloped sheet's rise over the column; the opacity is the coverage's.
+TEST(VdbVoxelize, SheetsHoldTheSpanOfTheirSurfaceInTheVoxel) {
+    Scene s;
+    const uint32_t m = vcttest::addMaterial(s, glm::vec3(0.5f));
+    const float y = 4.37f;  // flat sheet, dominant axis y
+    addQuadCorners(s, glm::vec3(2.3f, y, 3.45f), glm::vec3(7.6f, y, 3.45f), glm::vec3(7.6f, y, 6.2f),
+                   glm::vec3(2.3f, y, 6.2f), m);
+    // Sloped sheet: y = 1 + 2 (x - 2.3) / 5.3 over z in [7.3, 9.1], dominant axis y.
+    addQuadCorners(s, glm::vec3(2.3f, 1.f, 7.3f), glm::vec3(2.3f, 1.f, 9.1f), glm::vec3(7.6f, 3.f, 9.1f),
+                   glm::vec3(7.6f, 3.f, 7.3f), m);
+    s.bounds.expand(glm::vec3(0.f));
+    s.bounds.expand(glm::vec3(10.f));
+    const SparseVoxelScene v = voxelizeSparse(s, s.bounds, 24, false, false, true, true);
+    const SparseVoxelScene coverage = voxelizeSparse(s, s.bounds, 24, false, false, true, false);
+    ASSERT_TRUE(v.sheet);
+    EXPECT_FALSE(coverage.sheet) << "coverage alone keeps no spans";
+    EXPECT_EQ(activeSet(*v.opacity), activeSet(*coverage.opacity));
+    for (auto it = v.opacity->cbeginValueOn(); it; ++it)
+        EXPECT_EQ(*it, coverage.opacity->tree().getValue(it.getCoord())) << it.getCoord();
+    const glm::dvec3 o(v.origin);
+    const double inv = 1.0 / double(v.voxelSize), step = 1.0 / 1024.0;
+    auto clamp01 = [](double x) { return std::clamp(x, 0.0, 1.0); };
+    int flat = 0, sloped = 0;
+    for (auto it = v.sheet->cbeginValueOn(); it; ++it) {
+        const openvdb::Coord c = it.getCoord();
+        const openvdb::Vec3s t = *it;  // lo, hi, axis
+        ASSERT_EQ(t[2], 1.f) << "dominant axis y, voxel " << c;
+        ASSERT_LE(t[0], t[1]) << c;
+        const double x0 = c.x(), x1 = c.x() + 1.0;
+        const double zMid = (c.z() + 0.5) / inv + o.z;
+        if (zMid > 3.6 && zMid < 6.0 && (x0 / inv + o.x) > 2.4 && (x1 / inv + o.x) < 7.5) {
+            const double here = clamp01((y - o.y) * inv - c.y());
+            EXPECT_LE(t[0], here + 1e-6) << c;
+            EXPECT_GE(t[1], here - 1e-6) << c;
+            EXPECT_LE(t[1] - t[0], 2.0 * step + 1e-6) << "a flat sheet's span is its height, voxel " << c;
+            ++flat;
+        } else if (zMid > 7.5 && zMid < 8.9 && (x0 / inv + o.x) > 2.4 && (x1 / inv + o.x) < 7.5) {
+            auto planeY = [&](double xv) { return (1.0 + 2.0 * ((xv / inv + o.x) - 2.3) / 5.3 - o.y) * inv - c.y(); };
+            const double lo = clamp01(planeY(x0)), hi = clamp01(planeY(x1));
+            if (lo >= hi) continue;  // the plane leaves this voxel over the column: a neighbour's
+            EXPECT_NEAR(t[0], lo, step + 1e-4) << "sloped sheet, voxel " << c;
+            EXPECT_NEAR(t[1], hi, step + 1e-4) << "sloped sheet, voxel " << c;
+            ++sloped;
+        }
+    }
+    EXPECT_GE(flat, 40);
+    EXPECT_GE(sloped, 40);
+}
+
 TEST(VdbVoxelize, AveragesMatchQuantizedMaterial) {
     Scene s = floorAndBox();
     SparseVoxelScene v = voxelizeSparse(s, 32);

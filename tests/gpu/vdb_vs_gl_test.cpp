@@ -135,13 +135,28 @@ TEST(VdbVsGl, SameLayoutOccupancyAndRadiance) {
     EXPECT_LT(maxRadianceRelErr, 0.01) << "radiance differs beyond half precision";
 }
 
+// Calls f(x, y, z, index) for every voxel of a grid of size r, in the order of a level read back
+// with readLevel0.
+template <class F>
+void forEachVoxel(glm::ivec3 r, F f) {
+    for (int z = 0; z < r.z; ++z)
+        for (int y = 0; y < r.y; ++y)
+            for (int x = 0; x < r.x; ++x) f(x, y, z, (size_t(z) * r.y + y) * r.x + x);
+}
+
+// The boxes with a tilted plate among them, whose rim crosses columns in part.
+Scene boxesAndATiltedPlate() {
+    Scene s = boxesScene();
+    vcttest::addQuad(s, {0.3f, 1.6f, -0.4f}, {0.9f, 0.35f, 0.1f}, {-0.2f, 0.1f, 0.7f}, s.triangleMaterial[0]);
+    vcttest::finish(s);
+    return s;
+}
+
 // vct.voxel.edges=coverage: the dense voxelizer's coverage pass and resolve give level 0 the
 // values the sparse voxelizer gives, voxel by voxel (steps of 1/1024, exact in half floats), on
 // the boxes scene and a tilted plate, for an AO grid (opacity alone) and a lit one.
 TEST(VdbVsGl, EdgeCoverageLevelZeroMatchesTheSparseOne) {
-    Scene s = boxesScene();
-    vcttest::addQuad(s, {0.3f, 1.6f, -0.4f}, {0.9f, 0.35f, 0.1f}, {-0.2f, 0.1f, 0.7f}, s.triangleMaterial[0]);
-    vcttest::finish(s);
+    const Scene s = boxesAndATiltedPlate();
     GlContext& gl = GlContext::shared();
     const GpuScene gpu = uploadScene(s);
     ParamMap params;
@@ -157,15 +172,13 @@ TEST(VdbVsGl, EdgeCoverageLevelZeroMatchesTheSparseOne) {
         auto acc = sparse.opacity->getConstAccessor();
         size_t partial = 0, full = 0, differ = 0;
         double maxDiff = 0.0;
-        for (int z = 0; z < r.z; ++z)
-            for (int y = 0; y < r.y; ++y)
-                for (int x = 0; x < r.x; ++x) {
-                    const float g = opacity[(size_t(z) * r.y + y) * r.x + x], c = acc.getValue({x, y, z});
-                    partial += c > 0.f && c < 1.f;
-                    full += c == 1.f;
-                    differ += g != c;
-                    maxDiff = std::max(maxDiff, double(std::abs(g - c)));
-                }
+        forEachVoxel(r, [&](int x, int y, int z, size_t i) {
+            const float g = opacity[i], c = acc.getValue({x, y, z});
+            partial += c > 0.f && c < 1.f;
+            full += c == 1.f;
+            differ += g != c;
+            maxDiff = std::max(maxDiff, double(std::abs(g - c)));
+        });
         std::printf("[vdb_vs_gl] edge coverage (%s): %zu partial, %zu full voxels; %zu differ, max %.4f\n",
                     lit ? "lit" : "AO", partial, full, differ, maxDiff);
         EXPECT_GT(partial, 20u) << "the tilted plate's rim";
@@ -174,6 +187,50 @@ TEST(VdbVsGl, EdgeCoverageLevelZeroMatchesTheSparseOne) {
         EXPECT_LE(differ, (partial + full) / 1000);
         EXPECT_LE(maxDiff, 1.5 / 1024.0);
     }
+}
+
+// vct.voxel.edges=sheet: the dense sheet pass (voxelize_sheets.glsl) gives level 0's sheet
+// texels the sparse voxelizer gives: the same voxels hold a sheet, with the same axis and span
+// (a rounding step apart at most where float clipping or a fused multiply-add moves a bound).
+TEST(VdbVsGl, SheetTexelsMatchTheSparseOnes) {
+    const Scene s = boxesAndATiltedPlate();
+    GlContext& gl = GlContext::shared();
+    const GpuScene gpu = uploadScene(s);
+    ParamMap params;
+    params.set("vct.voxel.edges", "sheet");
+    PassTimer timer;
+    const VoxelGrid grid = voxelizeScene(gpu, s.bounds, 48, params, timer, false, false);
+    const SparseVoxelScene sparse = voxelizeSparse(s, s.bounds, 48, false, false, true, true);
+    ASSERT_TRUE(grid.sheets);
+    ASSERT_TRUE(sparse.sheet);
+    const glm::ivec3 r = grid.resolution;
+    const std::vector<float> texels = readLevel0(grid.sheets, r, 4);
+    const std::vector<float> opacity = readLevel0(grid.opacity, r, 1);
+    gl.checkErrors("vdb_vs_gl: sheets");
+    auto acc = sparse.sheet->getConstAccessor();
+    size_t sheets = 0, kindDiffers = 0, spanDiffers = 0;
+    double maxDiff = 0.0;
+    forEachVoxel(r, [&](int x, int y, int z, size_t i) {
+        const glm::vec4 g(texels[4 * i], texels[4 * i + 1], texels[4 * i + 2], texels[4 * i + 3]);
+        EXPECT_EQ(g.x, opacity[i]) << "the texel's opacity is level 0's";
+        openvdb::Vec3s c;
+        const bool isSheet = acc.probeValue({x, y, z}, c);
+        sheets += isSheet;
+        if (isSheet != (g.w >= 0.f) || (isSheet && c[2] != g.w)) {
+            ++kindDiffers;
+            return;
+        }
+        if (!isSheet) return;
+        const double d = std::max(std::abs(double(c[0]) - g.y), std::abs(double(c[1]) - g.z));
+        spanDiffers += d > 0.0;
+        maxDiff = std::max(maxDiff, d);
+    });
+    std::printf("[vdb_vs_gl] sheets: %zu voxels; %zu differ in kind, %zu in span, max %.5f\n", sheets, kindDiffers,
+                spanDiffers, maxDiff);
+    EXPECT_GT(sheets, 3000u);
+    EXPECT_EQ(kindDiffers, 0u);
+    EXPECT_LE(spanDiffers, sheets / 500);
+    EXPECT_LE(maxDiff, 1.0 / 1024.0 + 1e-6);
 }
 
 struct Images {
