@@ -119,8 +119,7 @@ CONE_FN float cone_sampleSheets(CONE_VOLUME_PARAM vec3 p, vec3 d, float dt, floa
     vec3 g = clamp((f - vec3(0.5f)) * s + vec3(0.5f), vec3(0.0f), vec3(1.0f));
     vec3 axisAlpha = vec3(cone_trilinear8(lo, hi, vec3(g.x, f.y, f.z)), cone_trilinear8(lo, hi, vec3(f.x, g.y, f.z)),
                           cone_trilinear8(lo, hi, vec3(f.x, f.y, g.z)));
-    vec3 logT = log2(max(vec3(1.0f) - clamp(axisAlpha, vec3(0.0f), vec3(1.0f)), vec3(1.0e-7f)));
-    float plainLogT = dot(cone_anisoWeights(d), logT);
+    float plainLogT = cone_blendedLogTransmittance(cone_anisoWeights(d), axisAlpha);
     // The sheets: per axis, the four columns across it.
     vec3 h = 0.5f * dt * abs(d);
     vec3 e = vec3(1.0f) - f;

@@ -54,8 +54,8 @@ VCT_CONST int CONE_UNIT_COLOR = 17;     // rayMarchVoxels: albedo or radiance
 VCT_CONST int CONE_UNIT_NORMAL = 18;    // GI: grid.normal (mipmapped), for the facing test
 VCT_CONST int CONE_UNIT_BOUNCE_DIRECT = 19;  // cone_bounce.glsl: emission + direct light (level 0)
 VCT_CONST int CONE_UNIT_BOUNCE_ALBEDO = 20;  // cone_bounce.glsl: grid.albedo
-VCT_CONST int CONE_UNIT_BOUNCE_EMISSION = 21;
-VCT_CONST int CONE_UNIT_SHEETS = 22;  // AO with vct.voxel.edges=sheet: grid.sheets (CONE_SHEETS)  // cone_bounce.glsl: grid.emission (BOUNCE_EMITTED)
+VCT_CONST int CONE_UNIT_BOUNCE_EMISSION = 21;  // cone_bounce.glsl: grid.emission (BOUNCE_EMITTED)
+VCT_CONST int CONE_UNIT_SHEETS = 22;  // AO with vct.voxel.edges=sheet: grid.sheets (CONE_SHEETS)
 VCT_CONST int CONE_IMAGE_OUTPUT = 0;    // image unit of the output texture
 VCT_CONST int CONE_UBO_BINDING = 0;
 // A gather split over dispatches: its running sums per pixel (or listed voxel), read by the
@@ -270,10 +270,13 @@ CONE_FN vec3 cone_anisoWeights(vec3 d) { return d * d; }
 // point of the directional mips) turn transparent for oblique cones as the level rises
 // (alpha -> w.x + (1 - w.x) 2^-level), so leaking would grow with the grid resolution.
 // Radiance keeps the linear blend's ratio to opacity (the blended colour of what is hit).
+// log2 of the blended transmittance, T_x^w.x T_y^w.y T_z^w.z, of the three axes' opacities.
+CONE_FN float cone_blendedLogTransmittance(vec3 w, vec3 alpha) {
+    return dot(w, log2(max(vec3(1.0) - clamp(alpha, vec3(0.0), vec3(1.0)), vec3(1.0e-7))));
+}
 CONE_FN vec4 cone_blendDirectional(vec3 w, vec4 x, vec4 y, vec4 z) {
     vec3 alpha = clamp(vec3(x.w, y.w, z.w), vec3(0.0), vec3(1.0));
-    vec3 logT = log2(max(vec3(1.0) - alpha, vec3(1.0e-7)));
-    float a = 1.0f - exp2(dot(w, logT));
+    float a = 1.0f - exp2(cone_blendedLogTransmittance(w, alpha));
     float aLinear = dot(w, alpha);
     vec3 c = w.x * vec3(x) + w.y * vec3(y) + w.z * vec3(z);
     return vec4(aLinear > 1.0e-6f ? c * (a / aLinear) : c, a);

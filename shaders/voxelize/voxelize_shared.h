@@ -96,7 +96,9 @@ VCT_CONST float VOX_EMISSION_MAX = 1.0e9;
 VCT_CONST float VOX_COVERAGE_SCALE = 65536.0f;
 VCT_CONST float VOX_COVERAGE_STEPS = 1024.0f;
 
-// The dominant axis of a voxel whose surfaces have one (axes = 1, 2 or 4).
+// Whether the surfaces crossing a voxel share one dominant axis (one bit of `axes` set), and
+// that axis (axes = 1, 2 or 4).
+VOX_FN bool vox_oneAxis(uint axes) { return axes != 0u && (axes & (axes - 1u)) == 0u; }
 VOX_FN int vox_singleAxis(uint axes) { return axes == 1u ? 0 : (axes == 2u ? 1 : 2); }
 
 // Area of the triangle (a, b, c), projected to 2D, inside the unit square at `lo`: the
@@ -160,7 +162,7 @@ VOX_FN uvec2 vox_sheetSpanFixed(vec2 zSpan, float k) {
 VOX_FN vec4 vox_sheetTexel(float opacity, uint axes, uint loInv, uint hi) {
     float lo = (VOX_SHEET_STEPS + 1.0f - float(loInv)) / VOX_SHEET_STEPS;
     float top = float(hi) / VOX_SHEET_STEPS;
-    bool sheet = axes != 0u && (axes & (axes - 1u)) == 0u && loInv > 0u && lo <= top;
+    bool sheet = vox_oneAxis(axes) && loInv > 0u && lo <= top;
     return sheet ? vec4(opacity, lo, top, float(vox_singleAxis(axes))) : vec4(opacity, 0.0f, 0.0f, -1.0f);
 }
 
@@ -172,7 +174,7 @@ VOX_FN uint vox_coverageFixed(float area) { return uint(floor(area * VOX_COVERAG
 // two neighbours along its axis (0 where unoccupied); 0 when no triangle crossed it.
 VOX_FN float vox_edgeOpacity(uint axes, uint below, uint here, uint above) {
     if (axes == 0u) return 0.0f;
-    if ((axes & (axes - 1u)) != 0u) return 1.0f;  // two or more dominant axes
+    if (!vox_oneAxis(axes)) return 1.0f;  // two or more dominant axes
     float sum = min(float(below), VOX_COVERAGE_SCALE) + min(float(here), VOX_COVERAGE_SCALE) +
                 min(float(above), VOX_COVERAGE_SCALE);
     float share = min(sum, VOX_COVERAGE_SCALE) * (VOX_COVERAGE_STEPS / VOX_COVERAGE_SCALE);

@@ -152,19 +152,34 @@ Scene boxesAndATiltedPlate() {
     return s;
 }
 
+// `s` voxelized at 48^3 by both voxelizers with vct.voxel.edges=`edges`, lit (with attributes)
+// or for AO (opacity alone).
+struct BothGrids {
+    VoxelGrid dense;
+    SparseVoxelScene sparse;
+};
+BothGrids voxelizeBoth(const Scene& s, const GpuScene& gpu, const char* edges, bool lit) {
+    ParamMap params;
+    params.set("vct.voxel.edges", edges);
+    PassTimer timer;
+    const std::string e = edges;
+    BothGrids out{voxelizeScene(gpu, s.bounds, 48, params, timer, lit, lit),
+                  voxelizeSparse(s, s.bounds, 48, lit, lit, e != "occupied", e == "sheet")};
+    GlContext::shared().checkErrors(std::string("vdb_vs_gl: ") + edges);
+    return out;
+}
+
 // vct.voxel.edges=coverage: the dense voxelizer's coverage pass and resolve give level 0 the
 // values the sparse voxelizer gives, voxel by voxel (steps of 1/1024, exact in half floats), on
 // the boxes scene and a tilted plate, for an AO grid (opacity alone) and a lit one.
 TEST(VdbVsGl, EdgeCoverageLevelZeroMatchesTheSparseOne) {
     const Scene s = boxesAndATiltedPlate();
-    GlContext& gl = GlContext::shared();
+    GlContext& gl = GlContext::shared();  // before the upload: it makes the context current
     const GpuScene gpu = uploadScene(s);
-    ParamMap params;
-    params.set("vct.voxel.edges", "coverage");
-    PassTimer timer;
     for (bool lit : {false, true}) {
-        const VoxelGrid grid = voxelizeScene(gpu, s.bounds, 48, params, timer, lit, lit);
-        const SparseVoxelScene sparse = voxelizeSparse(s, s.bounds, 48, lit, lit, true);
+        const BothGrids both = voxelizeBoth(s, gpu, "coverage", lit);
+        const VoxelGrid& grid = both.dense;
+        const SparseVoxelScene& sparse = both.sparse;
         ASSERT_EQ(sparse.resolution, grid.resolution);
         const glm::ivec3 r = grid.resolution;
         const std::vector<float> opacity = readLevel0(grid.opacity, r, 1);
@@ -194,13 +209,10 @@ TEST(VdbVsGl, EdgeCoverageLevelZeroMatchesTheSparseOne) {
 // (a rounding step apart at most where float clipping or a fused multiply-add moves a bound).
 TEST(VdbVsGl, SheetTexelsMatchTheSparseOnes) {
     const Scene s = boxesAndATiltedPlate();
-    GlContext& gl = GlContext::shared();
-    const GpuScene gpu = uploadScene(s);
-    ParamMap params;
-    params.set("vct.voxel.edges", "sheet");
-    PassTimer timer;
-    const VoxelGrid grid = voxelizeScene(gpu, s.bounds, 48, params, timer, false, false);
-    const SparseVoxelScene sparse = voxelizeSparse(s, s.bounds, 48, false, false, true, true);
+    GlContext& gl = GlContext::shared();  // before the upload: it makes the context current
+    const BothGrids both = voxelizeBoth(s, uploadScene(s), "sheet", false);
+    const VoxelGrid& grid = both.dense;
+    const SparseVoxelScene& sparse = both.sparse;
     ASSERT_TRUE(grid.sheets);
     ASSERT_TRUE(sparse.sheet);
     const glm::ivec3 r = grid.resolution;
