@@ -86,7 +86,7 @@ bool cone_volumeLeaving(vec3 p, vec3 d, float texel) {
     return cone_leaving(pc, d, vec3(cm.info.y), reach);
 }
 
-vec4 cone_volumeSample(vec3 p, vec3 d, float lod, float dt) { return clip_sample(p, lod); }
+vec4 cone_volumeSample(vec3 p, vec3 d, float lod, float dt, vec2 cap) { return clip_sample(p, lod); }
 
 float cone_volumeFacing(vec3 p, vec3 d, float lod, vec4 s) { return 1.0; }
 

@@ -36,7 +36,7 @@ bool cone_surface(ivec2 pix, out vec3 pWorld, out vec3 n, out vec3 ng) {
 // The march settings of the uniform block.
 ConeMarch cone_uniformMarch() {
     return ConeMarch(u.march.x, u.march.y, u.march.w, u.limits.w, u.gridResolution.xyz,
-                     u.lanes.w != 0 ? cone_endRatio(u.march.y) : 0.0);
+                     u.lanes.w != 0 ? cone_endRatio(u.march.y) : 0.0, u.caps.x);
 }
 
 // The cone set around shading normal n: sum_c w_c * (cone result) integrates the cosine lobe.

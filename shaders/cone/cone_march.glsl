@@ -97,16 +97,11 @@ vec4 cone_sampleBaseSharpened(vec3 tc, vec3 d) {
 #if CONE_ANISO
 // The base level at a sample of direction d, voxel-space p, footprint 2^lod, step dt: the sheet
 // texels (CONE_SHEETS: eight fetches), sharpened (vct.sharpen) or one linear fetch.
-vec4 cone_sampleBase(vec3 p, vec3 tc, vec3 d, float lod, float dt) {
+vec4 cone_sampleBase(vec3 p, vec3 tc, vec3 d, float lod, float dt, vec2 cap) {
 #if defined(CONE_SHEETS)
     cone_fetches += 8.0;
     float texel = exp2(max(lod, 0.0));
-#if defined(CONE_SHARPEN)
-    float s = u.camera.w;
-#else
-    float s = 1.0;
-#endif
-    return vec4(0.0, 0.0, 0.0, cone_sampleSheets(p, d, dt, texel, s));
+    return vec4(0.0, 0.0, 0.0, cone_sampleSheets(p, d, dt, texel, cap));
 #elif defined(CONE_SHARPEN)
     return cone_sampleBaseSharpened(tc, d);
 #else
@@ -145,8 +140,8 @@ vec4 cone_sampleAniso(vec3 tc, vec3 d, float lod) {
 #endif
 
 // Premultiplied (radiance, alpha) of the grid at voxel-space point p, footprint 2^lod voxels,
-// step dt.
-vec4 cone_sampleGrid(vec3 p, vec3 d, float lod, float dt) {
+// step dt, lane cap `cap` (cone_sampleSheets).
+vec4 cone_sampleGrid(vec3 p, vec3 d, float lod, float dt, vec2 cap) {
     vec3 tc = p / u.gridResolution.xyz;
 #if CONE_ANISO
     vec4 directional = cone_sampleAniso(tc, d, max(lod - 1.0, 0.0));
@@ -157,10 +152,10 @@ vec4 cone_sampleGrid(vec3 p, vec3 d, float lod, float dt) {
 #ifdef CONE_DEPTH_LEVELS
         // With optical-depth levels the two levels blend as depth (the base level's 0 / 1
         // voxels filter to VOX_DEPTH_MAX times their opacity).
-        directional = vox_alphaFromDepth(mix(vox_depthFromCoverage(cone_sampleBase(p, tc, d, lod, dt)),
+        directional = vox_alphaFromDepth(mix(vox_depthFromCoverage(cone_sampleBase(p, tc, d, lod, dt, cap)),
                                              vox_depthFromAlpha(directional), lod));
 #else
-        directional = mix(cone_sampleBase(p, tc, d, lod, dt), directional, lod);
+        directional = mix(cone_sampleBase(p, tc, d, lod, dt, cap), directional, lod);
 #endif
     }
     return directional;
@@ -190,7 +185,7 @@ bool cone_volumeLeaving(vec3 p, vec3 d, float texel) {
     return cone_leaving(p, d, u.gridResolution.xyz, 1.5 * texel);
 }
 
-vec4 cone_volumeSample(vec3 p, vec3 d, float lod, float dt) { return cone_sampleGrid(p, d, lod, dt); }
+vec4 cone_volumeSample(vec3 p, vec3 d, float lod, float dt, vec2 cap) { return cone_sampleGrid(p, d, lod, dt, cap); }
 
 float cone_volumeFacing(vec3 p, vec3 d, float lod, vec4 s) {
 #if CONE_GI

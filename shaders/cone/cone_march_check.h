@@ -70,7 +70,7 @@ CONE_FN ConeCheckOutput cone_checkEvaluate(CONE_VOLUME_PARAM ConeCheckInput c) {
     o.frameB = vec4(f[1], 0.0f);
     o.frameN = vec4(f[2], 0.0f);
 
-    ConeMarch m = {c.march.x, c.march.y, c.march.z, c.march.w, vec3(0.0f), 0.0f};
+    ConeMarch m = {c.march.x, c.march.y, c.march.z, c.march.w, vec3(0.0f), 0.0f, 0.0f};
     vec3 origin = vec3(c.origin);
     vec3 d = vec3(c.direction);
     float lod = cone_footprintLod(m, c.limits.z, c.origin.w, c.direction.w);
@@ -97,14 +97,14 @@ CONE_FN ConeCheckOutput cone_checkEvaluate(CONE_VOLUME_PARAM ConeCheckInput c) {
 struct ConeCheckVolume {
     float lod(float l, vec3 x) const { return cone_checkLod(l, x); }
     bool leaving(vec3 p, vec3 d, float texel) const { return cone_checkLeaving(p, d, texel); }
-    vec4 sample(vec3 p, vec3, float l, float) const { return cone_checkSample(p, l); }
+    vec4 sample(vec3 p, vec3, float l, float, vec2) const { return cone_checkSample(p, l); }
     float facing(vec3, vec3 d, float, vec4) const { return cone_checkFacing(d); }
 };
 #else
 // The volume as cone_marchVolume's prototypes name it.
 float cone_volumeLod(float lod, vec3 x) { return cone_checkLod(lod, x); }
 bool cone_volumeLeaving(vec3 p, vec3 d, float texel) { return cone_checkLeaving(p, d, texel); }
-vec4 cone_volumeSample(vec3 p, vec3 d, float lod, float dt) { return cone_checkSample(p, lod); }
+vec4 cone_volumeSample(vec3 p, vec3 d, float lod, float dt, vec2 cap) { return cone_checkSample(p, lod); }
 float cone_volumeFacing(vec3 p, vec3 d, float lod, vec4 s) { return cone_checkFacing(d); }
 #endif
 

@@ -10,8 +10,10 @@
 //                          (its coarsest level bounds it; a clipmap's levels bound it below)
 //   leaving(p, d, texel)   true once a sample of edge `texel` at p, moving along d, can only
 //                          see the zero border (cone_leaving in the volume's own coordinates)
-//   sample(p, d, lod, dt)  premultiplied (radiance, alpha) at p, footprint 2^lod voxels, for a
-//                          step of dt voxels (which the sample sits in the middle of)
+//   sample(p, d, lod, dt, cap)  premultiplied (radiance, alpha) at p, footprint 2^lod voxels,
+//                          for a step of dt voxels (which the sample sits in the middle of);
+//                          cap = (maxDist - the sample's distance, maxDist tan(alpha)) for
+//                          cone_sampleSheets' lane caps (y = 0: none)
 //   facing(p, d, lod, s)   the weight of sample s's radiance for a cone along d (GI's facing
 //                          rule; 1 where the volume has none)
 // and, for cone_sampleSheets (vct.voxel.edges=sheet), sheet(v), the base level's sheet texel.
@@ -34,7 +36,7 @@
 #define CONE_VOLUME_ARG volume,
 #define CONE_VOLUME_LOD(l, x) volume.lod(l, x)
 #define CONE_VOLUME_LEAVING(p, d, texel) volume.leaving(p, d, texel)
-#define CONE_VOLUME_SAMPLE(p, d, l, dt) volume.sample(p, d, l, dt)
+#define CONE_VOLUME_SAMPLE(p, d, l, dt, cap) volume.sample(p, d, l, dt, cap)
 #define CONE_VOLUME_FACING(p, d, l, s) volume.facing(p, d, l, s)
 #define CONE_VOLUME_SHEET(v) volume.sheet(v)
 #else
@@ -43,7 +45,7 @@
 #define CONE_VOLUME_ARG
 #define CONE_VOLUME_LOD(l, x) cone_volumeLod(l, x)
 #define CONE_VOLUME_LEAVING(p, d, texel) cone_volumeLeaving(p, d, texel)
-#define CONE_VOLUME_SAMPLE(p, d, l, dt) cone_volumeSample(p, d, l, dt)
+#define CONE_VOLUME_SAMPLE(p, d, l, dt, cap) cone_volumeSample(p, d, l, dt, cap)
 #define CONE_VOLUME_FACING(p, d, l, s) cone_volumeFacing(p, d, l, s)
 #define CONE_VOLUME_SHEET(v) cone_volumeSheet(v)
 #ifdef CONE_SHEETS
@@ -51,7 +53,7 @@ vec4 cone_volumeSheet(ivec3 v);
 #endif
 float cone_volumeLod(float lod, vec3 x);
 bool cone_volumeLeaving(vec3 p, vec3 d, float texel);
-vec4 cone_volumeSample(vec3 p, vec3 d, float lod, float dt);
+vec4 cone_volumeSample(vec3 p, vec3 d, float lod, float dt, vec2 cap);
 float cone_volumeFacing(vec3 p, vec3 d, float lod, vec4 s);
 #endif
 
@@ -72,35 +74,62 @@ VCT_BEGIN_NAMESPACE
 // tent across a (the share of the lane its column covers). Consecutive steps tile the lane, so
 // one crossing is seen once, the share the lane's cap crosses of it. Two voxels of one column
 // along a can hold the same sheet (one lying on the face between them), so each column counts
-// its larger. Voxels without a sheet keep the sharpened fetches of the plain base level
-// (cone_sharpenTexel along each axis, blended by cone_blendDirectional). The sheets' share
-// composites with the rest as transmittances, and is written so that the march's step
-// correction (alpha' = 1 - (1 - alpha)^(dt / texel)) returns it.
-// `dt` is the sample's step, `texel` its texel edge, `s` vct.sharpen (1: linear).
+// its larger. A voxel without a sheet (where sheets of two axes meet: a room's corner, a slab's
+// rim) is read the same way as a box: a sheet spanning the whole voxel across the lane's main
+// axis (the largest |d_a|), crossed by the step that enters it along that axis. Read instead as
+// the sharpened trilinear box at every sample, it let lanes through where a wall's sheets meet
+// the floor's: between the tent across the wall's sheet and the box a step later, a lane
+// crossing a wall just above the floor was counted short. The share composites as a
+// transmittance, written so that the march's step correction
+// (alpha' = 1 - (1 - alpha)^(dt / texel)) returns it.
+//
+// The lane's cap. The cone model cuts each direction of a lane at R, so a lane whose ray
+// crosses a sheet near R is closed by the sheet only in the share of its directions that meet
+// it before R; a march that counts the whole lane up to R and nothing past it is a ray there,
+// and the lanes' rays alias with the circle of directions that meet the sheet at R (a flat
+// sheet at height h: the lanes' ring at cos(theta) = h / R), an error that need not fall as the
+// lanes narrow. For a lane of half-aperture alpha along d crossing, at t_c, a plane whose normal
+// n makes the angle theta with d, a direction w at angle u from d towards n meets it at
+// t_c cos(theta) / dot(w, n) ~ t_c (1 - u tan(theta)) to first order, so before R where
+// u <= (R - t_c) / (R tan(theta)): the lane's share on the near side of a chord of its disc
+// (cone_capShare). A sheet's normal is its axis a (cos(theta) = |d_a|); its crossing is its
+// span's middle. With caps on (cap.y = R tan(alpha) > 0) the march reads the zone about R
+// (cone_capZone) at the base level alone and carries on past R through it (a box's crossing is
+// its middle along the lane's main axis).
+// `dt` is the sample's step, `texel` its texel edge, `cap` as the volume's sample takes it.
 // The loops are written out: llvmpipe counts every loop iteration of an invocation against the
 // march's budget (coneLoopBound).
 #if defined(__cplusplus) || defined(CONE_SHEETS)
-// Opacity of a texel without a sheet, 0 for a sheet's.
-CONE_FN float cone_plainOpacity(vec4 v) { return v.w < 0.0f ? v.x : 0.0f; }
-// Trilinear over the eight corners (corner c = x + 2 y + 4 z; lo = corners 0..3, hi = 4..7).
-CONE_FN float cone_trilinear8(vec4 lo, vec4 hi, vec3 w) {
-    vec2 a = mix(vec2(lo.x, lo.z), vec2(lo.y, lo.w), w.x);
-    vec2 b = mix(vec2(hi.x, hi.z), vec2(hi.y, hi.w), w.x);
-    return mix(mix(a.x, a.y, w.y), mix(b.x, b.y, w.y), w.z);
+// The share of a disc on the near side of a chord `along` from its centre (the disc's radius
+// `across`): 1 past the rim, 0 before it; across = 0 is the ray (1 where along >= 0).
+CONE_FN float cone_capShare(float along, float across) {
+    if (along >= across) return 1.0f;
+    if (along <= -across) return 0.0f;
+    float s = along / across;
+    return 0.5f + (s * sqrt(1.0f - s * s) + asin(s)) * 0.318309886f;
 }
 // The opacity texel v of voxel k along axis a holds, if its sheet is of axis a and its span
-// [k + lo, k + hi] meets the step's [x - h, x + h]; else 0.
-CONE_FN float cone_sheetCrossed(vec4 v, int a, float k, float x, float h) {
-    return (v.w >= 0.0f && int(v.w) == a && x + h >= k + v.y && x - h <= k + v.z) ? v.x : 0.0f;
+// [k + lo, k + hi] meets the step's [x - h, x + h], or it holds no sheet, a is the lane's main
+// axis (`mainAxis`) and the step meets [k, k + 1]; else 0. `da` is the lane's d_a; with caps on the
+// opacity is its lane's share (cone_capShare of (R - t_c) cos(theta) over R tan(alpha) sin(theta)).
+CONE_FN float cone_sheetCrossed(vec4 v, int a, float k, float x, float h, float da, vec2 cap, bool mainAxis) {
+    bool box = v.w < 0.0f && v.x > 0.0f && mainAxis;
+    vec2 span = box ? vec2(0.0f, 1.0f) : vec2(v.y, v.z);
+    if (!((box || (v.w >= 0.0f && int(v.w) == a)) && x + h >= k + span.x && x - h <= k + span.y)) return 0.0f;
+    if (!(cap.y > 0.0f)) return v.x;
+    float along = cap.x * abs(da) - (k + 0.5f * (span.x + span.y) - x) * sign(da);
+    return v.x * cone_capShare(along, cap.y * sqrt(max(1.0f - da * da, 0.0f)));
 }
 // One column along axis a: its two voxels k and k + 1, counted once (the larger), weighted by
 // the tent across a.
-CONE_FN float cone_sheetColumn(vec4 v0, vec4 v1, int a, float k, float x, float h, float w) {
-    return w * max(cone_sheetCrossed(v0, a, k, x, h), cone_sheetCrossed(v1, a, k + 1.0f, x, h));
+CONE_FN float cone_sheetColumn(vec4 v0, vec4 v1, int a, float k, float x, float h, float da, vec2 cap, bool mainAxis,
+                               float w) {
+    return w * max(cone_sheetCrossed(v0, a, k, x, h, da, cap, mainAxis),
+                   cone_sheetCrossed(v1, a, k + 1.0f, x, h, da, cap, mainAxis));
 }
 
 CONE_VOLUME_TEMPLATE
-CONE_FN float cone_sampleSheets(CONE_VOLUME_PARAM vec3 p, vec3 d, float dt, float texel, float s) {
+CONE_FN float cone_sampleSheets(CONE_VOLUME_PARAM vec3 p, vec3 d, float dt, float texel, vec2 cap) {
     vec3 x = p - vec3(0.5f);
     vec3 c0 = floor(x);
     ivec3 i0 = ivec3(c0);
@@ -113,30 +142,24 @@ CONE_FN float cone_sampleSheets(CONE_VOLUME_PARAM vec3 p, vec3 d, float dt, floa
     vec4 t5 = CONE_VOLUME_SHEET(i0 + ivec3(1, 0, 1));
     vec4 t6 = CONE_VOLUME_SHEET(i0 + ivec3(0, 1, 1));
     vec4 t7 = CONE_VOLUME_SHEET(i0 + ivec3(1, 1, 1));
-    // The voxels without a sheet: one sharpened trilinear sum per axis, blended as optical depth.
-    vec4 lo = vec4(cone_plainOpacity(t0), cone_plainOpacity(t1), cone_plainOpacity(t2), cone_plainOpacity(t3));
-    vec4 hi = vec4(cone_plainOpacity(t4), cone_plainOpacity(t5), cone_plainOpacity(t6), cone_plainOpacity(t7));
-    vec3 g = clamp((f - vec3(0.5f)) * s + vec3(0.5f), vec3(0.0f), vec3(1.0f));
-    vec3 axisAlpha = vec3(cone_trilinear8(lo, hi, vec3(g.x, f.y, f.z)), cone_trilinear8(lo, hi, vec3(f.x, g.y, f.z)),
-                          cone_trilinear8(lo, hi, vec3(f.x, f.y, g.z)));
-    float plainLogT = cone_blendedLogTransmittance(cone_anisoWeights(d), axisAlpha);
-    // The sheets: per axis, the four columns across it.
+    // Per axis, the four columns across it; boxes on the lane's main axis alone.
     vec3 h = 0.5f * dt * abs(d);
+    bool mx = h.x >= h.y && h.x >= h.z, my = !mx && h.y >= h.z, mz = !mx && !my;
     vec3 e = vec3(1.0f) - f;
-    float blocked = cone_sheetColumn(t0, t1, 0, c0.x, p.x, h.x, e.y * e.z) +
-                    cone_sheetColumn(t2, t3, 0, c0.x, p.x, h.x, f.y * e.z) +
-                    cone_sheetColumn(t4, t5, 0, c0.x, p.x, h.x, e.y * f.z) +
-                    cone_sheetColumn(t6, t7, 0, c0.x, p.x, h.x, f.y * f.z) +
-                    cone_sheetColumn(t0, t2, 1, c0.y, p.y, h.y, e.x * e.z) +
-                    cone_sheetColumn(t1, t3, 1, c0.y, p.y, h.y, f.x * e.z) +
-                    cone_sheetColumn(t4, t6, 1, c0.y, p.y, h.y, e.x * f.z) +
-                    cone_sheetColumn(t5, t7, 1, c0.y, p.y, h.y, f.x * f.z) +
-                    cone_sheetColumn(t0, t4, 2, c0.z, p.z, h.z, e.x * e.y) +
-                    cone_sheetColumn(t1, t5, 2, c0.z, p.z, h.z, f.x * e.y) +
-                    cone_sheetColumn(t2, t6, 2, c0.z, p.z, h.z, e.x * f.y) +
-                    cone_sheetColumn(t3, t7, 2, c0.z, p.z, h.z, f.x * f.y);
+    float blocked = cone_sheetColumn(t0, t1, 0, c0.x, p.x, h.x, d.x, cap, mx, e.y * e.z) +
+                    cone_sheetColumn(t2, t3, 0, c0.x, p.x, h.x, d.x, cap, mx, f.y * e.z) +
+                    cone_sheetColumn(t4, t5, 0, c0.x, p.x, h.x, d.x, cap, mx, e.y * f.z) +
+                    cone_sheetColumn(t6, t7, 0, c0.x, p.x, h.x, d.x, cap, mx, f.y * f.z) +
+                    cone_sheetColumn(t0, t2, 1, c0.y, p.y, h.y, d.y, cap, my, e.x * e.z) +
+                    cone_sheetColumn(t1, t3, 1, c0.y, p.y, h.y, d.y, cap, my, f.x * e.z) +
+                    cone_sheetColumn(t4, t6, 1, c0.y, p.y, h.y, d.y, cap, my, e.x * f.z) +
+                    cone_sheetColumn(t5, t7, 1, c0.y, p.y, h.y, d.y, cap, my, f.x * f.z) +
+                    cone_sheetColumn(t0, t4, 2, c0.z, p.z, h.z, d.z, cap, mz, e.x * e.y) +
+                    cone_sheetColumn(t1, t5, 2, c0.z, p.z, h.z, d.z, cap, mz, f.x * e.y) +
+                    cone_sheetColumn(t2, t6, 2, c0.z, p.z, h.z, d.z, cap, mz, e.x * f.y) +
+                    cone_sheetColumn(t3, t7, 2, c0.z, p.z, h.z, d.z, cap, mz, f.x * f.y);
     float sheetLogT = log2(max(1.0f - min(blocked, 1.0f), 1.0e-7f)) * (texel / dt);
-    return 1.0f - exp2(plainLogT + sheetLogT);
+    return 1.0f - exp2(sheetLogT);
 }
 #endif
 
@@ -149,6 +172,8 @@ struct ConeMarch {
     float planeRatio;       // plane limit: texels of at most h / ratio voxels at height h; 0 = off
     vec3 levelBase;         // voxels per axis of level 0, for the plane limit's texel size (0: 2^lod)
     float endRatio;         // vct.end-taper: texels of at most (maxDist - t) / endRatio voxels; 0 = off
+    float capTan;           // vct.voxel.edges=sheet: tan of a lane's half-aperture, for its cap
+                            // (cone_sampleSheets); 0 = off
 };
 
 // The longest edge, in level-0 voxels, of a texel of level `level` (the volume's GL mip sizes:
@@ -203,21 +228,26 @@ CONE_FN ConeResult cone_marchVolume(CONE_VOLUME_PARAM ConeMarch m, vec3 origin, 
     r.alpha = 0.0f;
     r.samples = 0.0f;
     float t = 0.0f;
+    // Lane caps (cone_sampleSheets): the zone about maxDist at the base level, to its far end.
+    float zone = cone_capZone(maxDist, m.capTan);
+    float end = maxDist + zone;
     for (int i = 0; i < CONE_MAX_STEPS; ++i) {
-        if (t >= maxDist || r.alpha >= m.maxAlpha) break;
+        if (t >= end || r.alpha >= m.maxAlpha) break;
         float lod = cone_footprintLod(m, t, h0, rise);
         // vct.end-taper: whole levels whose texel, sampled half a step on, reaches no further
         // than maxDist (a trilinear sample sees one texel past its centre).
         if (m.endRatio > 0.0f) lod = min(lod, floor(log2(max(1.0f, (maxDist - t) / m.endRatio))));
+        if (zone > 0.0f && t >= maxDist - zone) lod = 0.0f;
         lod = CONE_VOLUME_LOD(lod, origin + d * t);
-        float dt = min(m.stepFactor * exp2(lod), maxDist - t);
+        // A step ends at maxDist, and (caps) the next ones at the zone's end.
+        float dt = min(m.stepFactor * exp2(lod), (t < maxDist ? maxDist : end) - t);
         vec3 p = origin + d * (t + 0.5f * dt);
         lod = CONE_VOLUME_LOD(lod, p);
         float texel = exp2(lod);
 
         if (CONE_VOLUME_LEAVING(p, d, texel)) break;
 
-        vec4 s = CONE_VOLUME_SAMPLE(p, d, lod, dt);
+        vec4 s = CONE_VOLUME_SAMPLE(p, d, lod, dt, vec2(maxDist - (t + 0.5f * dt), maxDist * m.capTan));
         r.samples += 1.0f;
         s = vec4(vec3(s) * CONE_VOLUME_FACING(p, d, lod, s), s.a);
         cone_composite(r, s, dt, texel, t + 0.5f * dt, falloff);

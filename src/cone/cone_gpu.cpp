@@ -76,7 +76,9 @@ ConeSlices coneSlices(const gpu::ConeUniforms& u, const ConeSettings& settings, 
     ConeSlices slices;
     slices.cones = coneMarchLanes(settings, int(std::max(res.x, std::max(res.y, res.z)))).cones;
     // At most CONE_BLOCK_CONES: the first slice is what coneUniforms loaded.
-    slices.perDispatch = conesPerDispatch(u.limits.x, u.march.y, loopsPerStep, settings.dispatchCones);
+    // With lane caps a march carries on through the zone past maxDist, after one shortened step.
+    const float marched = u.limits.x + (u.caps.x > 0.f ? gpu::cone_capZone(u.limits.x, u.caps.x) + u.march.y : 0.f);
+    slices.perDispatch = conesPerDispatch(marched, u.march.y, loopsPerStep, settings.dispatchCones);
     return slices;
 }
 
@@ -136,6 +138,11 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
                            const ConeSettings& settings) {
     gpu::ConeUniforms u = coneUniforms(gi, grid, maxDistWorld, sky, settings);
     u.image = conePixelImage(gbuffer, settings);
+    // Lane caps where the march reads sheets (cone_sampleSheets): the lanes' half-aperture.
+    if (readsSheets(gi, grid, directionalLevels(gi, grid, settings))) {
+        const glm::ivec3 res = grid.resolution;
+        u.caps.x = coneTanHalfAperture(coneMarchLanes(settings, std::max(res.x, std::max(res.y, res.z))).apertureDeg);
+    }
     BoundConePass bound;
     bound.ubo = bindConeUniforms(u);
     bindGBufferTextures(gbuffer);  // the shaders texelFetch position, normal, geomNormal, albedo

@@ -13,7 +13,7 @@ namespace vct {
 using namespace conedetail;
 
 static_assert(sizeof(gpu::ConeUniforms) ==
-                  2 * 64 + 8 * 16 + gpu::CONE_MAX_SET_CONES * 16 + gpu::CONE_BLOCK_CONES * 16,
+                  2 * 64 + 9 * 16 + gpu::CONE_MAX_SET_CONES * 16 + gpu::CONE_BLOCK_CONES * 16,
               "ConeUniforms must match its std140 layout");
 static_assert(sizeof(gpu::ConeUniforms) <= 16384, "GL 4.5 guarantees uniform blocks of 16 KiB (MAX_UNIFORM_BLOCK_SIZE)");
 

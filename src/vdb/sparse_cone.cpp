@@ -44,6 +44,9 @@ struct MarchParams {
     bool mirror = false;                // vct.below-plane=mirror (gpu::cone_mirrored)
 };
 
+// True where AO's base samples read the sheets (vct.voxel.edges=sheet over directional levels).
+bool readsSheets(const SparseVoxelScene& v, bool gi) { return v.sheet && !gi && !v.directional[0].empty(); }
+
 // One thread's view of the levels: the volume of gpu::cone_marchVolume.
 struct LevelSampler {
     const MarchParams* mp;
@@ -70,7 +73,7 @@ struct LevelSampler {
             for (const auto& g : v.radianceLevels) radiance.push_back(std::make_unique<RadianceAcc>(g->tree()));
             for (const auto& g : v.normalLevels) normal.push_back(std::make_unique<RadianceAcc>(g->tree()));
         }
-        if (v.sheet && !gi && !v.directional[0].empty()) sheets = std::make_unique<RadianceAcc>(v.sheet->tree());
+        if (readsSheets(v, gi)) sheets = std::make_unique<RadianceAcc>(v.sheet->tree());
         for (size_t d = 0; d < 6; ++d)
             for (const auto& l : v.directional[d]) {
                 dirOpacity[d].push_back(std::make_unique<OpacityAcc>(l.opacity->tree()));
@@ -136,11 +139,11 @@ struct LevelSampler {
     // cone_sampleBase: the base level at a sample of direction d. With vct.sharpen, one fetch per
     // axis sharpened along that axis, blended as the directional levels' axes are
     // (cone_sampleBaseSharpened); else one trilinear fetch.
-    glm::vec4 sampleBase(const glm::vec3& p, const glm::vec3& d, float lod, float dt) {
+    glm::vec4 sampleBase(const glm::vec3& p, const glm::vec3& d, float lod, float dt, const glm::vec2& cap) {
         if (sheets) {
             // vct.voxel.edges=sheet.
             const float texel = std::exp2(std::max(lod, 0.f));
-            return glm::vec4(0.f, 0.f, 0.f, gpu::cone_sampleSheets(*this, p, d, dt, texel, mp->sharpen));
+            return glm::vec4(0.f, 0.f, 0.f, gpu::cone_sampleSheets(*this, p, d, dt, texel, cap));
         }
         if (!(mp->sharpen > 1.f)) return sampleLevel(p, 0);
         const openvdb::Vec3R xyz = levelCoord(p, 0);
@@ -186,7 +189,7 @@ struct LevelSampler {
     // textureLod: premultiplied radiance (GI) and opacity at footprint 2^lod. With directional
     // levels, cone_sampleGrid: below lod 1 the base level blended into the first directional
     // one, as trilinear filtering blends two mip levels.
-    glm::vec4 sample(const glm::vec3& p, const glm::vec3& d, float lod, float dt) {
+    glm::vec4 sample(const glm::vec3& p, const glm::vec3& d, float lod, float dt, const glm::vec2& cap) {
         if (dirOpacity[0].empty()) {
             fetches += 1.0;
             return acrossLevels(lod, [&](int level) { return sampleLevel(p, level); });
@@ -195,10 +198,10 @@ struct LevelSampler {
         glm::vec4 directional = sampleAniso(p, d, lod);
         if (lod < 1.f) {
             if (depth)
-                directional = gpu::vox_alphaFromDepth(glm::mix(gpu::vox_depthFromCoverage(sampleBase(p, d, lod, dt)),
+                directional = gpu::vox_alphaFromDepth(glm::mix(gpu::vox_depthFromCoverage(sampleBase(p, d, lod, dt, cap)),
                                                               gpu::vox_depthFromAlpha(directional), std::max(lod, 0.f)));
             else
-                directional = glm::mix(sampleBase(p, d, lod, dt), directional, std::max(lod, 0.f));
+                directional = glm::mix(sampleBase(p, d, lod, dt, cap), directional, std::max(lod, 0.f));
         }
         return directional;
     }
@@ -308,6 +311,7 @@ MarchParams marchParams(const SparseVoxelScene& v, const ConeSettings& s) {
     mp.march.planeRatio = s.planeLimit ? gpu::CONE_PLANE_LIMIT_RATIO : 0.f;
     mp.march.levelBase = glm::vec3(v.resolution);
     mp.march.endRatio = s.endTaper ? gpu::cone_endRatio(s.stepFactor) : 0.f;
+    mp.march.capTan = 0.f;  // AO over sheets sets it (aoMarch)
     mp.offset = s.offsetVoxels;
     mp.sharpen = sharpensLevels(s) ? s.sharpen : 1.f;
     mp.aim = s.aim;
@@ -340,6 +344,8 @@ AoMarch aoMarch(const SparseVoxelScene& voxels, float radius, const ConeSettings
         throw InternalError(what, "radius " + std::to_string(radius) + " must be finite and >= 0");
     AoMarch m;
     m.mp = marchParams(voxels, settings);
+    // Lane caps where the march reads sheets (cone_sampleSheets).
+    if (readsSheets(voxels, false)) m.mp.march.capTan = coneTanHalfAperture(m.mp.laneApertureDeg);
     m.maxDist = radius / voxels.voxelSize;
     m.falloff = (settings.aoMapping == ConeAoMapping::Falloff && m.maxDist > 0.f)
                     ? gpu::CONE_FALLOFF_LAMBDA_R / m.maxDist

@@ -18,7 +18,7 @@ namespace {
 struct EmptyVolume {
     float lod(float l, glm::vec3) const { return l; }
     bool leaving(glm::vec3, glm::vec3, float) const { return false; }
-    glm::vec4 sample(glm::vec3, glm::vec3, float, float) const { return glm::vec4(0.f); }
+    glm::vec4 sample(glm::vec3, glm::vec3, float, float, glm::vec2) const { return glm::vec4(0.f); }
     float facing(glm::vec3, glm::vec3, float, glm::vec4) const { return 1.f; }
 };
 
@@ -43,7 +43,7 @@ TEST(ConeBudget, AMarchTakesNoMoreStepsThanTheBound) {
         const float planeRatio = (i % 2 == 0) ? gpu::CONE_PLANE_LIMIT_RATIO : 0.f;
         // vct.end-taper: finer levels near the end, never below level 0, so still beta a step.
         const float endRatio = (i % 5 < 2) ? gpu::cone_endRatio(beta) : 0.f;
-        const gpu::ConeMarch m{tanHalf, beta, 1.f, planeRatio, glm::vec3(64.f, 41.f, 64.f), endRatio};
+        const gpu::ConeMarch m{tanHalf, beta, 1.f, planeRatio, glm::vec3(64.f, 41.f, 64.f), endRatio, 0.f};
         const gpu::ConeResult r =
             gpu::cone_marchVolume(volume, m, glm::vec3(0.f), glm::vec3(0.f, 0.f, 1.f), 1.5f, rise, maxDist, 0.f);
         EXPECT_LE((long long)r.samples, boundSteps(maxDist, beta))
@@ -51,7 +51,7 @@ TEST(ConeBudget, AMarchTakesNoMoreStepsThanTheBound) {
         ++checked;
     }
     // A cone along the plane with the plane limit meets the bound within two steps.
-    const gpu::ConeMarch flat{0.5f, 0.5f, 1.f, gpu::CONE_PLANE_LIMIT_RATIO, glm::vec3(0.f), 0.f};
+    const gpu::ConeMarch flat{0.5f, 0.5f, 1.f, gpu::CONE_PLANE_LIMIT_RATIO, glm::vec3(0.f), 0.f, 0.f};
     const gpu::ConeResult r =
         gpu::cone_marchVolume(volume, flat, glm::vec3(0.f), glm::vec3(1.f, 0.f, 0.f), 1.5f, 0.f, 100.f, 0.f);
     EXPECT_GE((long long)r.samples + 2, boundSteps(100.f, 0.5f));

@@ -24,11 +24,11 @@ struct UniformMedium {
     glm::vec3 colour;
     float lod(float, glm::vec3) const { return 0.f; }
     bool leaving(glm::vec3, glm::vec3, float) const { return false; }
-    glm::vec4 sample(glm::vec3, glm::vec3, float, float) const { return glm::vec4(colour * alpha, alpha); }
+    glm::vec4 sample(glm::vec3, glm::vec3, float, float, glm::vec2) const { return glm::vec4(colour * alpha, alpha); }
     float facing(glm::vec3, glm::vec3, float, glm::vec4) const { return 1.f; }
 };
 
-gpu::ConeMarch march(float maxAlpha) { return {0.1f, 0.5f, maxAlpha, 0.f, glm::vec3(0.f), 0.f}; }
+gpu::ConeMarch march(float maxAlpha) { return {0.1f, 0.5f, maxAlpha, 0.f, glm::vec3(0.f), 0.f, 0.f}; }
 
 TEST(ConeMarch, UniformMediumCompositesToItsTransmittance) {
     UniformMedium medium{0.2f, {0.5f, 0.25f, 1.f}};
@@ -52,11 +52,11 @@ TEST(ConeMarch, SaturatedConeClosesToTheMediumsColour) {
 }
 
 TEST(ConeMarch, FootprintAndPlaneLimitLevels) {
-    const gpu::ConeMarch open{0.5f, 0.5f, 0.99f, 0.f, glm::vec3(0.f), 0.f};
+    const gpu::ConeMarch open{0.5f, 0.5f, 0.99f, 0.f, glm::vec3(0.f), 0.f, 0.f};
     EXPECT_EQ(gpu::cone_footprintLod(open, 0.5f, 1.5f, 0.f), 0.f) << "at least one voxel";
     EXPECT_NEAR(gpu::cone_footprintLod(open, 8.f, 1.5f, 0.f), 3.f, 1e-6f) << "diameter 2 t tan = 8 voxels";
     // Plane limit: whole levels of at most h / 1.5 voxels, h = h0 + t rise.
-    const gpu::ConeMarch limited{0.5f, 0.5f, 0.99f, 1.5f, glm::vec3(0.f), 0.f};
+    const gpu::ConeMarch limited{0.5f, 0.5f, 0.99f, 1.5f, glm::vec3(0.f), 0.f, 0.f};
     EXPECT_EQ(gpu::cone_footprintLod(limited, 8.f, 1.5f, 0.f), 0.f) << "a cone along the plane stays at level 0";
     EXPECT_EQ(gpu::cone_footprintLod(limited, 8.f, 1.5f, 0.5f), 1.f) << "h = 5.5: texels of 2 voxels";
     EXPECT_EQ(gpu::cone_footprintLod(limited, 8.f, 1.5f, 1.f), 2.f) << "h = 9.5: texels of 4 voxels";
@@ -75,8 +75,8 @@ TEST(ConeMarch, ThePlaneLimitMeasuresTheTexelsALevelHas) {
     // One texel along an axis shorter than 2^level spans the axis, less than 2^level.
     EXPECT_EQ(gpu::cone_texelExtent(glm::vec3(64.f, 11.f, 64.f), 4.f), 16.f);
     EXPECT_NEAR(gpu::cone_texelExtent(glm::vec3(64.f, 11.f, 64.f), 3.f), 11.f, 1e-6f);
-    const gpu::ConeMarch cube{0.5f, 0.5f, 0.99f, 1.5f, glm::vec3(128.f), 0.f};
-    const gpu::ConeMarch tall{0.5f, 0.5f, 0.99f, 1.5f, glm::vec3(128.f, 127.f, 128.f), 0.f};
+    const gpu::ConeMarch cube{0.5f, 0.5f, 0.99f, 1.5f, glm::vec3(128.f), 0.f, 0.f};
+    const gpu::ConeMarch tall{0.5f, 0.5f, 0.99f, 1.5f, glm::vec3(128.f, 127.f, 128.f), 0.f, 0.f};
     EXPECT_EQ(gpu::cone_footprintLod(cube, 200.f, 0.f, 0.3f), 5.f) << "h = 60, reach 40: 32-voxel texels";
     EXPECT_EQ(gpu::cone_footprintLod(tall, 200.f, 0.f, 0.3f), 4.f) << "level 5's texels are 42.3 > 40";
     EXPECT_EQ(gpu::cone_footprintLod(tall, 200.f, 0.f, 0.5f), 5.f) << "h = 100, reach 66.7";
@@ -100,7 +100,7 @@ TEST(ConeMarch, TheLevelBiasMovesTheFootprintsLevel) {
     EXPECT_EQ(coneFootprintTangent(s, aperture), std::tan(half));
     for (float b : {-2.f, -1.f, -0.5f, 1.f}) {
         s.levelBias = b;
-        const gpu::ConeMarch m{coneFootprintTangent(s, aperture), 0.5f, 0.99f, 0.f, glm::vec3(0.f), 0.f};
+        const gpu::ConeMarch m{coneFootprintTangent(s, aperture), 0.5f, 0.99f, 0.f, glm::vec3(0.f), 0.f, 0.f};
         // Diameter 2 t tan(30 deg) = 36.95 voxels at t = 32: level 5.208 + b, never below 0.
         EXPECT_NEAR(gpu::cone_footprintLod(m, 32.f, 1.5f, 0.f), std::log2(64.f * std::tan(half)) + b, 1e-5f) << b;
         EXPECT_EQ(gpu::cone_footprintLod(m, 0.25f, 1.5f, 0.f), 0.f) << b << ": at least one voxel";
@@ -112,7 +112,7 @@ struct RecordingVolume {
     std::vector<glm::vec4> samples;  // position, level
     float lod(float l, glm::vec3) const { return l; }
     bool leaving(glm::vec3, glm::vec3, float) const { return false; }
-    glm::vec4 sample(glm::vec3 p, glm::vec3, float l, float) {
+    glm::vec4 sample(glm::vec3 p, glm::vec3, float l, float, glm::vec2) {
         samples.push_back(glm::vec4(p, l));
         return glm::vec4(0.f);
     }
@@ -126,7 +126,7 @@ struct RecordingVolume {
 TEST(ConeMarch, ATaperedEndSamplesNothingPastTheMaximumDistance) {
     const float maxDist = 40.f;
     const glm::vec3 d(0.f, 0.f, 1.f);
-    gpu::ConeMarch m{0.5f, 0.5f, 0.99f, 0.f, glm::vec3(0.f), 0.f};
+    gpu::ConeMarch m{0.5f, 0.5f, 0.99f, 0.f, glm::vec3(0.f), 0.f, 0.f};
     RecordingVolume plain, tapered;
     gpu::cone_marchVolume(plain, m, glm::vec3(0.f), d, 1.5f, 1.f, maxDist, 0.f);
     m.endRatio = gpu::cone_endRatio(m.stepFactor);

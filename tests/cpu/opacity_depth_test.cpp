@@ -27,7 +27,7 @@ struct TexelRow {
         const float a = (i >= 0 && i < int(alpha.size())) ? alpha[size_t(i)] : 0.f;
         return asDepth ? gpu::vox_depthFromAlpha(glm::vec4(0.f, 0.f, 0.f, a)).w : a;
     }
-    glm::vec4 sample(glm::vec3 p, glm::vec3, float, float) const {
+    glm::vec4 sample(glm::vec3 p, glm::vec3, float, float, glm::vec2) const {
         const float x = p.x - 0.5f;
         const int i = int(std::floor(x));
         const float f = x - float(i);
@@ -40,7 +40,7 @@ struct TexelRow {
 // Transmittance of a march along +x from x0 over 20 voxels (steps of half a voxel: beta 0.5,
 // footprint one voxel, the default cone step), no early exit.
 float transmittance(const TexelRow& row, float x0) {
-    const gpu::ConeMarch m{0.01f, 0.5f, 1.f, 0.f, glm::vec3(0.f), 0.f};
+    const gpu::ConeMarch m{0.01f, 0.5f, 1.f, 0.f, glm::vec3(0.f), 0.f, 0.f};
     const gpu::ConeResult r = gpu::cone_marchVolume(row, m, glm::vec3(x0, 0.f, 0.f), glm::vec3(1.f, 0.f, 0.f), 1.5f,
                                                     0.f, 20.f, 0.f);
     return 1.f - r.alpha;

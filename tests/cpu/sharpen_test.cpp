@@ -52,7 +52,7 @@ struct SharpenedRow {
     float lod(float, glm::vec3) const { return 0.f; }
     bool leaving(glm::vec3, glm::vec3, float) const { return false; }
     float texel(int i) const { return (i >= 0 && i < int(alpha.size())) ? alpha[size_t(i)] : 0.f; }
-    glm::vec4 sample(glm::vec3 p, glm::vec3, float, float) const {
+    glm::vec4 sample(glm::vec3 p, glm::vec3, float, float, glm::vec2) const {
         const float x = gpu::cone_sharpenTexel(p.x, s) - 0.5f;
         const int i = int(std::floor(x));
         const float f = x - float(i);
@@ -64,7 +64,7 @@ struct SharpenedRow {
 // Transmittance of a march along +x from x0 over 20 voxels (the default step, half a voxel at
 // a footprint of one voxel), no early exit.
 float transmittance(const SharpenedRow& row, float x0) {
-    const gpu::ConeMarch m{0.01f, gpu::CONE_DEFAULT_STEP, 1.f, 0.f, glm::vec3(0.f), 0.f};
+    const gpu::ConeMarch m{0.01f, gpu::CONE_DEFAULT_STEP, 1.f, 0.f, glm::vec3(0.f), 0.f, 0.f};
     const gpu::ConeResult r = gpu::cone_marchVolume(row, m, glm::vec3(x0, 0.f, 0.f), glm::vec3(1.f, 0.f, 0.f), 1.5f,
                                                     0.f, 20.f, 0.f);
     return 1.f - r.alpha;

@@ -2,41 +2,65 @@
 // against closed forms, on the CPU: the shared march through a flat sheet that lies inside its
 // voxel. A sample sees the sheet only when its step crosses it, so a march that ends short of
 // the sheet stays open where the box a voxel wide closes it, one that crosses it closes, and a
-// sheet that covers a share c of every column passes 1 - c at any angle and phase.
+// sheet that covers a share c of every column passes 1 - c at any angle and phase. A lane that
+// meets a sheet near R is closed by the share of its directions that meet it before R.
 #include "cone/cone_march_shared.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace vct {
 namespace {
 
-// A flat sheet on the plane z = kSheetZ inside the voxels of layer floor(kSheetZ), covering
+// A flat sheet on the plane z = sheetZ (kSheetZ unless set) inside the voxels of its layer, covering
 // `share` of every column; empty elsewhere. `plain`: the same voxels without their span (axis
-// -1), as the box filter reads them.
+// -1), read as boxes.
 constexpr float kSheetZ = 10.8f;
 struct SheetVolume {
     float share = 1.f;
     bool plain = false;
+    float sheetZ = kSheetZ;
     float lod(float, glm::vec3) const { return 0.f; }
     bool leaving(glm::vec3, glm::vec3, float) const { return false; }
     glm::vec4 sheet(glm::ivec3 v) const {
-        if (v.z != int(std::floor(kSheetZ))) return glm::vec4(0.f, 0.f, 0.f, -1.f);
-        const float in = kSheetZ - std::floor(kSheetZ);
+        if (v.z != int(std::floor(sheetZ))) return glm::vec4(0.f, 0.f, 0.f, -1.f);
+        const float in = sheetZ - std::floor(sheetZ);
         return plain ? glm::vec4(share, 0.f, 0.f, -1.f) : glm::vec4(share, in, in, 2.f);
     }
-    glm::vec4 sample(glm::vec3 p, glm::vec3 d, float lod, float dt) {
-        return glm::vec4(0.f, 0.f, 0.f, gpu::cone_sampleSheets(*this, p, d, dt, std::exp2(std::max(lod, 0.f)), 4.f));
+    glm::vec4 sample(glm::vec3 p, glm::vec3 d, float lod, float dt, glm::vec2 cap) {
+        return glm::vec4(0.f, 0.f, 0.f, gpu::cone_sampleSheets(*this, p, d, dt, std::exp2(std::max(lod, 0.f)), cap));
     }
     float facing(glm::vec3, glm::vec3, float, glm::vec4) const { return 1.f; }
 };
 
 // Opacity a march from `origin` along unit d gathers over maxDist voxels (footprints of one
 // voxel, the default step, no early exit).
-float marchAlpha(SheetVolume& volume, glm::vec3 origin, glm::vec3 d, float maxDist) {
-    const gpu::ConeMarch m{0.001f, gpu::CONE_DEFAULT_STEP, 1.f, 0.f, glm::vec3(0.f), 0.f};
+// With `capTan` > 0, a lane of that half-aperture's tangent (its cap).
+float marchAlpha(SheetVolume& volume, glm::vec3 origin, glm::vec3 d, float maxDist, float capTan = 0.f) {
+    const gpu::ConeMarch m{0.001f, gpu::CONE_DEFAULT_STEP, 1.f, 0.f, glm::vec3(0.f), 0.f, capTan};
     return gpu::cone_marchVolume(volume, m, origin, d, 1.5f, d.z, maxDist, 0.f).alpha;
+}
+
+// The share of the directions of a cone of half-aperture alpha about unit d (uniform in solid
+// angle) that meet the plane z = height within distance maxDist, by quadrature over the cone.
+double coneShareWithin(glm::dvec3 d, double alpha, double height, double maxDist) {
+    const glm::dvec3 e1 = glm::normalize(glm::cross(d, glm::dvec3(0.0, 1.0, 0.0)));
+    const glm::dvec3 e2 = glm::cross(d, e1);
+    const int nu = 400, nphi = 720;
+    double met = 0.0, all = 0.0;
+    for (int i = 0; i < nu; ++i) {
+        const double u = alpha * (double(i) + 0.5) / double(nu);
+        for (int j = 0; j < nphi; ++j) {
+            const double phi = 2.0 * M_PI * (double(j) + 0.5) / double(nphi);
+            const glm::dvec3 w = std::cos(u) * d + std::sin(u) * (std::cos(phi) * e1 + std::sin(phi) * e2);
+            all += std::sin(u);
+            if (w.z > 0.0 && height / w.z <= maxDist) met += std::sin(u);
+        }
+    }
+    return met / all;
 }
 
 TEST(SheetMarch, AMarchEndingShortOfTheSheetStaysOpenWhereTheBoxClosesIt) {
@@ -48,7 +72,7 @@ TEST(SheetMarch, AMarchEndingShortOfTheSheetStaysOpenWhereTheBoxClosesIt) {
         // Ends 0.3 voxel below the sheet: nothing crosses it.
         const float shortOf = kSheetZ - 0.3f - origin.z;
         EXPECT_LT(marchAlpha(sheet, origin, up, shortOf), 1e-6f) << "start " << origin.z;
-        // The sharpened box of the sheet's voxel reaches below it and closes the same march.
+        // The same voxel without its span, a box, reaches below the sheet and closes the same march.
         EXPECT_GT(marchAlpha(box, origin, up, shortOf), 0.5f) << "start " << origin.z;
         // Past it, closed (an opaque sample passes the composite's floor, 1e-7 to the power of
         // the step in texels: 3e-4 at the default step).
@@ -72,6 +96,39 @@ TEST(SheetMarch, ASheetCoveringAShareOfEachColumnPassesTheRestAtAnyAngle) {
                     << "share " << share << " rise " << rise << " phase " << phase;
             }
     }
+}
+
+// A lane whose ray meets a sheet near the maximum distance R is closed by the share of its
+// directions that meet it before R (the cone model's cut), not by 1 before R and 0 past it: a
+// flat sheet crossed by lanes of 3.7 degrees at 40-72 degrees from its normal, from past the
+// lane's cap before R (s = 1.2) to past it beyond R or the end of the zone the march reads.
+TEST(SheetMarch, ALaneCrossingASheetNearItsEndIsClosedByTheShareThatMeetsItBeforeR) {
+    const float alpha = 3.71f * float(M_PI) / 180.f, maxDist = 50.f;
+    double worstCapped = 0.0, worstRay = 0.0;
+    for (float theta : {40.f, 60.f, 72.f}) {
+        const float th = theta * float(M_PI) / 180.f;
+        const glm::vec3 d(std::sin(th), 0.f, std::cos(th));
+        for (float s : {-1.2f, -0.7f, -0.3f, -0.05f, 0.05f, 0.3f, 0.7f, 1.2f}) {
+            // Past the zone the march reads (cone_capZone) a lane's share is left out.
+            if (s < 0.f && -s * std::tan(th) > gpu::CONE_CAP_ZONE) continue;
+            // The ray meets the sheet at t_c = R (1 - s tan(alpha) tan(theta)) (not at R itself,
+            // where two steps meet and each may count it).
+            const float tc = maxDist * (1.f - s * std::tan(alpha) * std::tan(th));
+            const glm::vec3 origin(30.f, 30.f, 0.5f);
+            SheetVolume sheet;
+            sheet.sheetZ = origin.z + tc * d.z;
+            const double exact = coneShareWithin(glm::dvec3(d), alpha, double(tc * d.z), maxDist);
+            const double capped = marchAlpha(sheet, origin, d, maxDist, std::tan(alpha));
+            const double ray = marchAlpha(sheet, origin, d, maxDist);
+            EXPECT_NEAR(capped, exact, 0.03) << "theta " << theta << " s " << s;
+            worstCapped = std::max(worstCapped, std::abs(capped - exact));
+            worstRay = std::max(worstRay, std::abs(ray - exact));
+        }
+    }
+    std::printf("largest |alpha - share|: with the cap %.4f, as a ray %.4f\n", worstCapped, worstRay);
+    // Without its cap the lane is a ray there: wrong by most of the share somewhere.
+    EXPECT_GT(worstRay, 0.3);
+    EXPECT_LT(worstCapped, 0.1 * worstRay);
 }
 
 }  // namespace
