@@ -199,8 +199,8 @@ struct ConeUniforms {
                            // w = split gathers (CONE_SPLIT_RESUME | CONE_SPLIT_CARRY; 0 = whole)
     ivec4 lanes;           // x = lanes per cone of the set, y = the set-wide index of cones[0] (this slice's first),
                            // z = flags (CONE_LANES_AIM | CONE_LANES_MIRROR), w = vct.end-taper (1: cone_endRatio)
-    vec4 caps;             // x = tan of a lane's half-aperture where a pixel pass reads sheets (ConeMarch::capTan,
-                           // set by bindConePass; 0 = no caps), yzw = 0
+    vec4 caps;             // x = tan of a lane's half-aperture where a pixel pass reads sheets and marches lanes
+                           // (ConeMarch::capTan, set by bindConePass: laneCapTangent; 0 = no caps), yzw = 0
     vec4 coneAxes[CONE_MAX_SET_CONES];  // the set's cones before the lanes (xyz = direction, tangent frame)
     vec4 cones[CONE_BLOCK_CONES];  // xyz = direction in the tangent frame (z = normal), w = weight
 };

@@ -138,10 +138,11 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
                            const ConeSettings& settings) {
     gpu::ConeUniforms u = coneUniforms(gi, grid, maxDistWorld, sky, settings);
     u.image = conePixelImage(gbuffer, settings);
-    // Lane caps where the march reads sheets (cone_sampleSheets): the lanes' half-aperture.
+    // Lane caps where the march reads sheets (cone_sampleSheets, laneCapTangent).
     if (readsSheets(gi, grid, directionalLevels(gi, grid, settings))) {
         const glm::ivec3 res = grid.resolution;
-        u.caps.x = coneTanHalfAperture(coneMarchLanes(settings, std::max(res.x, std::max(res.y, res.z))).apertureDeg);
+        const ConeLanes lanes = coneMarchLanes(settings, std::max(res.x, std::max(res.y, res.z)));
+        u.caps.x = laneCapTangent(lanes.lanesPerCone, lanes.apertureDeg);
     }
     BoundConePass bound;
     bound.ubo = bindConeUniforms(u);

@@ -194,6 +194,10 @@ float coneFootprintTangent(const ConeSettings& s, float apertureDeg) {
     return coneTanHalfAperture(apertureDeg) * std::exp2(s.levelBias);
 }
 
+float laneCapTangent(int lanesPerCone, float apertureDeg) {
+    return lanesPerCone > 1 ? coneTanHalfAperture(apertureDeg) : 0.f;
+}
+
 ConeSettings readConeSettings(const ParamMap& params) {
     ConeSettings s = coneSettings().read(params);
     s.validate();

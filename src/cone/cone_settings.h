@@ -77,6 +77,11 @@ float coneTanHalfAperture(float apertureDeg);
 // `apertureDeg` (ConeLanes::apertureDeg): coneTanHalfAperture 2^(vct.level-bias), so the
 // footprint's level carries the bias (times exactly 1 at the default 0).
 float coneFootprintTangent(const ConeSettings& s, float apertureDeg);
+// ConeMarch::capTan of a march over sheets whose cones are split into `lanesPerCone` lanes of
+// full aperture `apertureDeg` (ConeLanes): the lanes' tan(aperture / 2), or 0 for whole cones. The cap is a first-order correction for narrow lanes
+// near R, where the march would read them as rays; a whole cone (60 degrees for 6) is no ray
+// there, and its zone about R (cone_capZone) read at the base level would be most of its march.
+float laneCapTangent(int lanesPerCone, float apertureDeg);
 
 // True when the directional levels are to hold optical depth: vct.opacity=depth, which only
 // the directional levels carry (vct.aniso=1). The one rule the mip builders of both backends,

@@ -344,8 +344,8 @@ AoMarch aoMarch(const SparseVoxelScene& voxels, float radius, const ConeSettings
         throw InternalError(what, "radius " + std::to_string(radius) + " must be finite and >= 0");
     AoMarch m;
     m.mp = marchParams(voxels, settings);
-    // Lane caps where the march reads sheets (cone_sampleSheets).
-    if (readsSheets(voxels, false)) m.mp.march.capTan = coneTanHalfAperture(m.mp.laneApertureDeg);
+    // Lane caps where the march reads sheets (cone_sampleSheets, laneCapTangent).
+    if (readsSheets(voxels, false)) m.mp.march.capTan = laneCapTangent(m.mp.lanesPerCone, m.mp.laneApertureDeg);
     m.maxDist = radius / voxels.voxelSize;
     m.falloff = (settings.aoMapping == ConeAoMapping::Falloff && m.maxDist > 0.f)
                     ? gpu::CONE_FALLOFF_LAMBDA_R / m.maxDist

@@ -5,6 +5,8 @@
 // sheet that covers a share c of every column passes 1 - c at any angle and phase. A lane that
 // meets a sheet near R is closed by the share of its directions that meet it before R.
 #include "cone/cone_march_shared.h"
+#include "cone/cone_set.h"
+#include "cone/cone_settings.h"
 
 #include <gtest/gtest.h>
 
@@ -100,7 +102,7 @@ TEST(SheetMarch, ASheetCoveringAShareOfEachColumnPassesTheRestAtAnyAngle) {
 
 // A lane whose ray meets a sheet near the maximum distance R is closed by the share of its
 // directions that meet it before R (the cone model's cut), not by 1 before R and 0 past it: a
-// flat sheet crossed by lanes of 3.7 degrees at 40-72 degrees from its normal, from past the
+// flat sheet crossed by lanes of half-aperture 3.7 degrees at 40-72 degrees from its normal, from past the
 // lane's cap before R (s = 1.2) to past it beyond R or the end of the zone the march reads.
 TEST(SheetMarch, ALaneCrossingASheetNearItsEndIsClosedByTheShareThatMeetsItBeforeR) {
     const float alpha = 3.71f * float(M_PI) / 180.f, maxDist = 50.f;
@@ -129,6 +131,23 @@ TEST(SheetMarch, ALaneCrossingASheetNearItsEndIsClosedByTheShareThatMeetsItBefor
     // Without its cap the lane is a ray there: wrong by most of the share somewhere.
     EXPECT_GT(worstRay, 0.3);
     EXPECT_LT(worstCapped, 0.1 * worstRay);
+}
+
+// Only lanes take a cap: the default set's whole cones of 60 degrees march to R as they did (no
+// zone about R read at the base level), auto lanes take their own half-aperture.
+TEST(SheetMarch, OnlyLanesTakeACap) {
+    ConeSettings whole;
+    const ConeLanes cones = coneMarchLanes(whole, 128);
+    ASSERT_EQ(cones.lanesPerCone, 1);
+    EXPECT_EQ(laneCapTangent(cones.lanesPerCone, cones.apertureDeg), 0.f);
+    EXPECT_EQ(gpu::cone_capZone(40.f, laneCapTangent(cones.lanesPerCone, cones.apertureDeg)), 0.f);
+    ConeSettings lanes;
+    lanes.lanes = 0;
+    lanes.lanesBase = 16;
+    const ConeLanes split = coneMarchLanes(lanes, 128);
+    ASSERT_GT(split.lanesPerCone, 1);
+    EXPECT_NEAR(laneCapTangent(split.lanesPerCone, split.apertureDeg),
+                std::tan(0.5 * double(split.apertureDeg) * M_PI / 180.0), 1e-6);
 }
 
 }  // namespace
