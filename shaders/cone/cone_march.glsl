@@ -100,8 +100,7 @@ vec4 cone_sampleBaseSharpened(vec3 tc, vec3 d) {
 vec4 cone_sampleBase(vec3 p, vec3 tc, vec3 d, float lod, float dt, vec2 cap) {
 #if defined(CONE_SHEETS)
     cone_fetches += 8.0;
-    float texel = exp2(max(lod, 0.0));
-    return vec4(0.0, 0.0, 0.0, cone_sampleSheets(p, d, dt, texel, cap));
+    return vec4(0.0, 0.0, 0.0, cone_sampleSheets(p, d, lod, dt, cap));
 #elif defined(CONE_SHARPEN)
     return cone_sampleBaseSharpened(tc, d);
 #else

@@ -96,7 +96,7 @@ VCT_BEGIN_NAMESPACE
 // span's middle. With caps on (cap.y = R tan(alpha) > 0) the march reads the zone about R
 // (cone_capZone) at the base level alone and carries on past R through it (a box's crossing is
 // its middle along the lane's main axis).
-// `dt` is the sample's step, `texel` its texel edge, `cap` as the volume's sample takes it.
+// `lod` and `dt` are the sample's footprint level and step, `cap` as the volume's sample takes it.
 // The loops are written out: llvmpipe counts every loop iteration of an invocation against the
 // march's budget (coneLoopBound).
 #if defined(__cplusplus) || defined(CONE_SHEETS)
@@ -129,7 +129,7 @@ CONE_FN float cone_sheetColumn(vec4 v0, vec4 v1, int a, float k, float x, float 
 }
 
 CONE_VOLUME_TEMPLATE
-CONE_FN float cone_sampleSheets(CONE_VOLUME_PARAM vec3 p, vec3 d, float dt, float texel, vec2 cap) {
+CONE_FN float cone_sampleSheets(CONE_VOLUME_PARAM vec3 p, vec3 d, float lod, float dt, vec2 cap) {
     vec3 x = p - vec3(0.5f);
     vec3 c0 = floor(x);
     ivec3 i0 = ivec3(c0);
@@ -158,6 +158,7 @@ CONE_FN float cone_sampleSheets(CONE_VOLUME_PARAM vec3 p, vec3 d, float dt, floa
                     cone_sheetColumn(t1, t5, 2, c0.z, p.z, h.z, d.z, cap, mz, f.x * e.y) +
                     cone_sheetColumn(t2, t6, 2, c0.z, p.z, h.z, d.z, cap, mz, e.x * f.y) +
                     cone_sheetColumn(t3, t7, 2, c0.z, p.z, h.z, d.z, cap, mz, f.x * f.y);
+    float texel = exp2(max(lod, 0.0f));
     float sheetLogT = log2(max(1.0f - min(blocked, 1.0f), 1.0e-7f)) * (texel / dt);
     return 1.0f - exp2(sheetLogT);
 }

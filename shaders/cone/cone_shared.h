@@ -283,13 +283,10 @@ CONE_FN vec3 cone_anisoWeights(vec3 d) { return d * d; }
 // point of the directional mips) turn transparent for oblique cones as the level rises
 // (alpha -> w.x + (1 - w.x) 2^-level), so leaking would grow with the grid resolution.
 // Radiance keeps the linear blend's ratio to opacity (the blended colour of what is hit).
-// log2 of the blended transmittance, T_x^w.x T_y^w.y T_z^w.z, of the three axes' opacities.
-CONE_FN float cone_blendedLogTransmittance(vec3 w, vec3 alpha) {
-    return dot(w, log2(max(vec3(1.0) - clamp(alpha, vec3(0.0), vec3(1.0)), vec3(1.0e-7))));
-}
 CONE_FN vec4 cone_blendDirectional(vec3 w, vec4 x, vec4 y, vec4 z) {
     vec3 alpha = clamp(vec3(x.w, y.w, z.w), vec3(0.0), vec3(1.0));
-    float a = 1.0f - exp2(cone_blendedLogTransmittance(w, alpha));
+    vec3 logT = log2(max(vec3(1.0) - alpha, vec3(1.0e-7)));
+    float a = 1.0f - exp2(dot(w, logT));
     float aLinear = dot(w, alpha);
     vec3 c = w.x * vec3(x) + w.y * vec3(y) + w.z * vec3(z);
     return vec4(aLinear > 1.0e-6f ? c * (a / aLinear) : c, a);

@@ -138,19 +138,19 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
                            const ConeSettings& settings) {
     gpu::ConeUniforms u = coneUniforms(gi, grid, maxDistWorld, sky, settings);
     u.image = conePixelImage(gbuffer, settings);
-    // Lane caps where the march reads sheets (cone_sampleSheets, laneCapTangent).
-    if (readsSheets(gi, grid, directionalLevels(gi, grid, settings))) {
-        const glm::ivec3 res = grid.resolution;
-        const ConeLanes lanes = coneMarchLanes(settings, std::max(res.x, std::max(res.y, res.z)));
-        u.caps.x = laneCapTangent(lanes.lanesPerCone, lanes.apertureDeg);
-    }
     BoundConePass bound;
-    bound.ubo = bindConeUniforms(u);
     bindGBufferTextures(gbuffer);  // the shaders texelFetch position, normal, geomNormal, albedo
     bound.directional = bindGridTextures(gi, grid, settings);
     bound.depthLevels = readsDepthLevels(grid, bound.directional);
     bound.sharpen = readsSharpened(settings, bound.directional);
     bound.sheets = readsSheets(gi, grid, bound.directional);
+    // Lane caps where the march reads sheets (cone_sampleSheets, laneCapTangent).
+    if (bound.sheets) {
+        const glm::ivec3 res = grid.resolution;
+        const ConeLanes lanes = coneMarchLanes(settings, std::max(res.x, std::max(res.y, res.z)));
+        u.caps.x = laneCapTangent(lanes.lanesPerCone, lanes.apertureDeg);
+    }
+    bound.ubo = bindConeUniforms(u);
     bound.slices = coneSlices(u, settings, denseLoopsPerStep(settings));
     return bound;
 }

@@ -140,11 +140,7 @@ struct LevelSampler {
     // axis sharpened along that axis, blended as the directional levels' axes are
     // (cone_sampleBaseSharpened); else one trilinear fetch.
     glm::vec4 sampleBase(const glm::vec3& p, const glm::vec3& d, float lod, float dt, const glm::vec2& cap) {
-        if (sheets) {
-            // vct.voxel.edges=sheet.
-            const float texel = std::exp2(std::max(lod, 0.f));
-            return glm::vec4(0.f, 0.f, 0.f, gpu::cone_sampleSheets(*this, p, d, dt, texel, cap));
-        }
+        if (sheets) return glm::vec4(0.f, 0.f, 0.f, gpu::cone_sampleSheets(*this, p, d, lod, dt, cap));  // vct.voxel.edges=sheet
         if (!(mp->sharpen > 1.f)) return sampleLevel(p, 0);
         const openvdb::Vec3R xyz = levelCoord(p, 0);
         const glm::vec4 x = sampleLevelAt(sharpenAlong(xyz, 0), 0), y = sampleLevelAt(sharpenAlong(xyz, 1), 0),

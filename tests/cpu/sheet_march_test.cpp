@@ -33,7 +33,7 @@ struct SheetVolume {
         return plain ? glm::vec4(share, 0.f, 0.f, -1.f) : glm::vec4(share, in, in, 2.f);
     }
     glm::vec4 sample(glm::vec3 p, glm::vec3 d, float lod, float dt, glm::vec2 cap) {
-        return glm::vec4(0.f, 0.f, 0.f, gpu::cone_sampleSheets(*this, p, d, dt, std::exp2(std::max(lod, 0.f)), cap));
+        return glm::vec4(0.f, 0.f, 0.f, gpu::cone_sampleSheets(*this, p, d, lod, dt, cap));
     }
     float facing(glm::vec3, glm::vec3, float, glm::vec4) const { return 1.f; }
 };
