@@ -4,6 +4,7 @@
 #pragma once
 #ifdef __cplusplus
 #include <glm/glm.hpp>
+#include <glm/integer.hpp>
 #include <cstdint>
 #define VCT_CONST static constexpr
 namespace vct { namespace gpu {
@@ -14,7 +15,7 @@ using uint = std::uint32_t;
 // GLSL's built-ins for the inline functions of shared headers (scalars and vectors alike).
 using glm::abs; using glm::any; using glm::clamp; using glm::dot; using glm::exp2; using glm::floor; using glm::greaterThan;
 using glm::length; using glm::lessThan; using glm::log2; using glm::max; using glm::min; using glm::mix; using glm::normalize;
-using glm::asin; using glm::sign; using glm::sqrt;
+using glm::asin; using glm::sign; using glm::sqrt; using glm::findLSB; using glm::findMSB;
 }}  // namespace vct::gpu
 #define VCT_BEGIN_NAMESPACE namespace vct { namespace gpu {
 #define VCT_END_NAMESPACE }}

@@ -21,6 +21,12 @@ vec4 cone_volumeSheet(ivec3 v) {
     if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(u.gridResolution.xyz)))) return vec4(0.0, 0.0, 0.0, -1.0);
     return texelFetch(cone_sheetTexture, v, 0);
 }
+layout(binding = CONE_UNIT_SHEET_EXTENTS) uniform usampler3D cone_sheetExtentTexture;
+// Its extent bits (VoxelGrid::sheetExtents); outside the grid none (the whole voxel).
+uint cone_volumeSheetExtent(ivec3 v) {
+    if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(u.gridResolution.xyz)))) return 0u;
+    return texelFetch(cone_sheetExtentTexture, v, 0).r;
+}
 #endif
 
 layout(binding = CONE_UNIT_OPACITY) uniform sampler3D cone_isoTexture;

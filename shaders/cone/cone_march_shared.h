@@ -16,7 +16,8 @@
 //                          cone_sampleSheets' lane caps (y = 0: none)
 //   facing(p, d, lod, s)   the weight of sample s's radiance for a cone along d (GI's facing
 //                          rule; 1 where the volume has none)
-// and, for cone_sampleSheets (vct.voxel.edges=sheet), sheet(v), the base level's sheet texel.
+// and, for cone_sampleSheets (vct.voxel.edges=sheet), sheet(v), the base level's sheet texel,
+// and sheetExtent(v), its extent bits.
 // In C++ the volume is an object with these member functions (cone_marchVolume is a
 // template); in GLSL they are the functions cone_volumeLod, cone_volumeLeaving,
 // cone_volumeSample and cone_volumeFacing, declared below and defined by the includer.
@@ -39,6 +40,7 @@
 #define CONE_VOLUME_SAMPLE(p, d, l, dt, cap) volume.sample(p, d, l, dt, cap)
 #define CONE_VOLUME_FACING(p, d, l, s) volume.facing(p, d, l, s)
 #define CONE_VOLUME_SHEET(v) volume.sheet(v)
+#define CONE_VOLUME_SHEET_EXTENT(v) volume.sheetExtent(v)
 #else
 #define CONE_VOLUME_TEMPLATE
 #define CONE_VOLUME_PARAM
@@ -48,8 +50,10 @@
 #define CONE_VOLUME_SAMPLE(p, d, l, dt, cap) cone_volumeSample(p, d, l, dt, cap)
 #define CONE_VOLUME_FACING(p, d, l, s) cone_volumeFacing(p, d, l, s)
 #define CONE_VOLUME_SHEET(v) cone_volumeSheet(v)
+#define CONE_VOLUME_SHEET_EXTENT(v) cone_volumeSheetExtent(v)
 #ifdef CONE_SHEETS
 vec4 cone_volumeSheet(ivec3 v);
+uint cone_volumeSheetExtent(ivec3 v);
 #endif
 float cone_volumeLod(float lod, vec3 x);
 bool cone_volumeLeaving(vec3 p, vec3 d, float texel);
@@ -70,13 +74,17 @@ VCT_BEGIN_NAMESPACE
 // ends below a sheet sees it up to a voxel early, and one that passes beside its voxel sees it
 // through the trilinear tent. Here a sheet voxel's opacity is seen by the sample whose step
 // crosses its span: along a, the step reaches dt |d_a| / 2 either side of the sample p, so the
-// voxel counts where [lo - h, hi + h] (h = dt |d_a| / 2) holds p's coordinate, with the linear
-// tent across a (the share of the lane its column covers). Consecutive steps tile the lane, so
+// voxel counts where [lo - h, hi + h] (h = dt |d_a| / 2) holds p's coordinate. Across a the
+// sample is a box one voxel wide about p, and the voxel's opacity lies on its extent across a
+// (the voxel's extent bits, vox_extentBits: where in the voxel its surfaces lie, to a tenth of
+// a voxel), so a plate's rim is seen where it is; with the whole voxel as extent this is the
+// trilinear tent, which spread a rim's share over its voxel. Consecutive steps tile the lane, so
 // one crossing is seen once, the share the lane's cap crosses of it. Two voxels of one column
 // along a can hold the same sheet (one lying on the face between them), so each column counts
 // its larger. A voxel without a sheet (where sheets of two axes meet: a room's corner, a slab's
-// rim) is read the same way as a box: a sheet spanning the whole voxel across the lane's main
-// axis (the largest |d_a|), crossed by the step that enters it along that axis. Read instead as
+// rim) is read the same way as a box: a sheet spanning its extent along the lane's main axis
+// (the largest |d_a|) and the whole voxel across it, crossed by the step that meets that extent
+// (a slab's edge where its faces are, not a voxel early). Read instead as
 // the sharpened trilinear box at every sample, it let lanes through where a wall's sheets meet
 // the floor's: between the tent across the wall's sheet and the box a step later, a lane
 // crossing a wall just above the floor was counted short. The share composites as a
@@ -108,32 +116,46 @@ CONE_FN float cone_capShare(float along, float across) {
     float s = along / across;
     return 0.5f + (s * sqrt(1.0f - s * s) + asin(s)) * 0.318309886f;
 }
-// The opacity texel v of voxel k along axis a holds, if its sheet is of axis a and its span
-// [k + lo, k + hi] meets the step's [x - h, x + h], or it holds no sheet, a is the lane's main
-// axis (`mainAxis`) and the step meets [k, k + 1]; else 0. `da` is the lane's d_a; with caps on the
-// opacity is its lane's share (cone_capShare of (R - t_c) cos(theta) over R tan(alpha) sin(theta)).
-CONE_FN float cone_sheetCrossed(vec4 v, int a, float k, float x, float h, float da, vec2 cap, bool mainAxis) {
-    bool box = v.w < 0.0f && v.x > 0.0f && mainAxis;
-    vec2 span = box ? vec2(0.0f, 1.0f) : vec2(v.y, v.z);
-    if (!((box || (v.w >= 0.0f && int(v.w) == a)) && x + h >= k + span.x && x - h <= k + span.y)) return 0.0f;
-    if (!(cap.y > 0.0f)) return v.x;
-    float along = cap.x * abs(da) - (k + 0.5f * (span.x + span.y) - x) * sign(da);
-    return v.x * cone_capShare(along, cap.y * sqrt(max(1.0f - da * da, 0.0f)));
+// The length of [j + s.x, j + s.y] inside the sample's box one voxel wide about x (with s =
+// (0, 1), the trilinear tent's weight of voxel j).
+CONE_FN float cone_acrossShare(vec2 s, float j, float x) {
+    return max(min(j + s.y, x + 0.5f) - max(j + s.x, x - 0.5f), 0.0f);
 }
-// One column along axis a: its two voxels k and k + 1, counted once (the larger), weighted by
-// the tent across a.
-CONE_FN float cone_sheetColumn(vec4 v0, vec4 v1, int a, float k, float x, float h, float da, vec2 cap, bool mainAxis,
-                               float w) {
-    return w * max(cone_sheetCrossed(v0, a, k, x, h, da, cap, mainAxis),
-                   cone_sheetCrossed(v1, a, k + 1.0f, x, h, da, cap, mainAxis));
+// What a sample at p (a step of 2 halfStep along d) sees of voxel `cell` along axis a. A sheet of
+// axis a whose span [k + lo, k + hi] the step meets: its opacity spread over its extent across a
+// (vox_extentSpan of its extent bits `e`; at most 1 there) times the share of the sample's box
+// that extent covers. A box (no sheet) where a is the lane's main axis (`mainAxis`) and the step
+// meets its extent along a: its opacity times the tent across a, the whole voxel (read by its
+// extent across, a lane whose box straddles a concave edge, a room's corner, passes the part
+// outside it). With caps on, times the lane's share (cone_capShare of (R - t_c) cos(theta) over
+// R tan(alpha) sin(theta)). Else 0.
+CONE_FN float cone_sheetSeen(vec4 v, uint e, int a, vec3 cell, vec3 p, vec3 d, float halfStep, vec2 cap, bool mainAxis) {
+    bool box = v.w < 0.0f && v.x > 0.0f && mainAxis;
+    vec2 span = box ? vox_extentSpan(e, a) : vec2(v.y, v.z);
+    float k = cell[a], x = p[a], h = halfStep * abs(d[a]);
+    if (!((box || (v.w >= 0.0f && int(v.w) == a)) && x + h >= k + span.x && x - h <= k + span.y)) return 0.0f;
+    int b = (a + 1) % 3, c = (a + 2) % 3;
+    vec2 sb = box ? vec2(0.0f, 1.0f) : vox_extentSpan(e, b), sc = box ? vec2(0.0f, 1.0f) : vox_extentSpan(e, c);
+    float seen = min(v.x / ((sb.y - sb.x) * (sc.y - sc.x)), 1.0f) * cone_acrossShare(sb, cell[b], p[b]) *
+                 cone_acrossShare(sc, cell[c], p[c]);
+    if (!(cap.y > 0.0f)) return seen;
+    float along = cap.x * abs(d[a]) - (k + 0.5f * (span.x + span.y) - x) * sign(d[a]);
+    return seen * cone_capShare(along, cap.y * sqrt(max(1.0f - d[a] * d[a], 0.0f)));
+}
+// One column along axis a: its voxels at `cell` and one further along a, counted once (the
+// larger).
+CONE_FN float cone_sheetColumn(vec4 v0, uint e0, vec4 v1, uint e1, int a, vec3 cell, vec3 p, vec3 d, float halfStep,
+                               vec2 cap, bool mainAxis) {
+    vec3 next = cell;
+    next[a] += 1.0f;
+    return max(cone_sheetSeen(v0, e0, a, cell, p, d, halfStep, cap, mainAxis),
+               cone_sheetSeen(v1, e1, a, next, p, d, halfStep, cap, mainAxis));
 }
 
 CONE_VOLUME_TEMPLATE
 CONE_FN float cone_sampleSheets(CONE_VOLUME_PARAM vec3 p, vec3 d, float lod, float dt, vec2 cap) {
-    vec3 x = p - vec3(0.5f);
-    vec3 c0 = floor(x);
+    vec3 c0 = floor(p - vec3(0.5f));
     ivec3 i0 = ivec3(c0);
-    vec3 f = x - c0;
     vec4 t0 = CONE_VOLUME_SHEET(i0);
     vec4 t1 = CONE_VOLUME_SHEET(i0 + ivec3(1, 0, 0));
     vec4 t2 = CONE_VOLUME_SHEET(i0 + ivec3(0, 1, 0));
@@ -142,22 +164,32 @@ CONE_FN float cone_sampleSheets(CONE_VOLUME_PARAM vec3 p, vec3 d, float lod, flo
     vec4 t5 = CONE_VOLUME_SHEET(i0 + ivec3(1, 0, 1));
     vec4 t6 = CONE_VOLUME_SHEET(i0 + ivec3(0, 1, 1));
     vec4 t7 = CONE_VOLUME_SHEET(i0 + ivec3(1, 1, 1));
+    uint e0 = CONE_VOLUME_SHEET_EXTENT(i0);
+    uint e1 = CONE_VOLUME_SHEET_EXTENT(i0 + ivec3(1, 0, 0));
+    uint e2 = CONE_VOLUME_SHEET_EXTENT(i0 + ivec3(0, 1, 0));
+    uint e3 = CONE_VOLUME_SHEET_EXTENT(i0 + ivec3(1, 1, 0));
+    uint e4 = CONE_VOLUME_SHEET_EXTENT(i0 + ivec3(0, 0, 1));
+    uint e5 = CONE_VOLUME_SHEET_EXTENT(i0 + ivec3(1, 0, 1));
+    uint e6 = CONE_VOLUME_SHEET_EXTENT(i0 + ivec3(0, 1, 1));
+    uint e7 = CONE_VOLUME_SHEET_EXTENT(i0 + ivec3(1, 1, 1));
     // Per axis, the four columns across it; boxes on the lane's main axis alone.
-    vec3 h = 0.5f * dt * abs(d);
-    bool mx = h.x >= h.y && h.x >= h.z, my = !mx && h.y >= h.z, mz = !mx && !my;
-    vec3 e = vec3(1.0f) - f;
-    float blocked = cone_sheetColumn(t0, t1, 0, c0.x, p.x, h.x, d.x, cap, mx, e.y * e.z) +
-                    cone_sheetColumn(t2, t3, 0, c0.x, p.x, h.x, d.x, cap, mx, f.y * e.z) +
-                    cone_sheetColumn(t4, t5, 0, c0.x, p.x, h.x, d.x, cap, mx, e.y * f.z) +
-                    cone_sheetColumn(t6, t7, 0, c0.x, p.x, h.x, d.x, cap, mx, f.y * f.z) +
-                    cone_sheetColumn(t0, t2, 1, c0.y, p.y, h.y, d.y, cap, my, e.x * e.z) +
-                    cone_sheetColumn(t1, t3, 1, c0.y, p.y, h.y, d.y, cap, my, f.x * e.z) +
-                    cone_sheetColumn(t4, t6, 1, c0.y, p.y, h.y, d.y, cap, my, e.x * f.z) +
-                    cone_sheetColumn(t5, t7, 1, c0.y, p.y, h.y, d.y, cap, my, f.x * f.z) +
-                    cone_sheetColumn(t0, t4, 2, c0.z, p.z, h.z, d.z, cap, mz, e.x * e.y) +
-                    cone_sheetColumn(t1, t5, 2, c0.z, p.z, h.z, d.z, cap, mz, f.x * e.y) +
-                    cone_sheetColumn(t2, t6, 2, c0.z, p.z, h.z, d.z, cap, mz, e.x * f.y) +
-                    cone_sheetColumn(t3, t7, 2, c0.z, p.z, h.z, d.z, cap, mz, f.x * f.y);
+    vec3 ad = abs(d);
+    bool mx = ad.x >= ad.y && ad.x >= ad.z, my = !mx && ad.y >= ad.z, mz = !mx && !my;
+    vec3 cx = c0 + vec3(1.0f, 0.0f, 0.0f), cy = c0 + vec3(0.0f, 1.0f, 0.0f), cz = c0 + vec3(0.0f, 0.0f, 1.0f);
+    vec3 cyz = c0 + vec3(0.0f, 1.0f, 1.0f), cxz = c0 + vec3(1.0f, 0.0f, 1.0f), cxy = c0 + vec3(1.0f, 1.0f, 0.0f);
+    float hs = 0.5f * dt;
+    float blocked = cone_sheetColumn(t0, e0, t1, e1, 0, c0, p, d, hs, cap, mx) +
+                    cone_sheetColumn(t2, e2, t3, e3, 0, cy, p, d, hs, cap, mx) +
+                    cone_sheetColumn(t4, e4, t5, e5, 0, cz, p, d, hs, cap, mx) +
+                    cone_sheetColumn(t6, e6, t7, e7, 0, cyz, p, d, hs, cap, mx) +
+                    cone_sheetColumn(t0, e0, t2, e2, 1, c0, p, d, hs, cap, my) +
+                    cone_sheetColumn(t1, e1, t3, e3, 1, cx, p, d, hs, cap, my) +
+                    cone_sheetColumn(t4, e4, t6, e6, 1, cz, p, d, hs, cap, my) +
+                    cone_sheetColumn(t5, e5, t7, e7, 1, cxz, p, d, hs, cap, my) +
+                    cone_sheetColumn(t0, e0, t4, e4, 2, c0, p, d, hs, cap, mz) +
+                    cone_sheetColumn(t1, e1, t5, e5, 2, cx, p, d, hs, cap, mz) +
+                    cone_sheetColumn(t2, e2, t6, e6, 2, cy, p, d, hs, cap, mz) +
+                    cone_sheetColumn(t3, e3, t7, e7, 2, cxy, p, d, hs, cap, mz);
     float texel = exp2(max(lod, 0.0f));
     float sheetLogT = log2(max(1.0f - min(blocked, 1.0f), 1.0e-7f)) * (texel / dt);
     return 1.0f - exp2(sheetLogT);

@@ -10,10 +10,11 @@
 layout(r32ui, binding = 0) uniform coherent uimage3D accCoverage;
 layout(r32ui, binding = 1) uniform coherent uimage3D accAxes;
 #ifdef EDGE_SHEETS
-// vct.voxel.edges=sheet: the span's two maxima (vox_sheetSpanFixed), accumulators
-// VOX_ACC_SHEET_LO and VOX_ACC_SHEET_HI.
+// vct.voxel.edges=sheet: the span's two maxima (vox_sheetSpanFixed) and the extent bits
+// (vox_extentBits), accumulators VOX_ACC_SHEET_LO, VOX_ACC_SHEET_HI and VOX_ACC_SHEET_EXTENT.
 layout(r32ui, binding = 2) uniform coherent uimage3D accSheetLo;
 layout(r32ui, binding = 3) uniform coherent uimage3D accSheetHi;
+layout(r32ui, binding = 4) uniform coherent uimage3D accSheetExtent;
 #endif
 
 #include "voxelize/voxelize_pass.glsl"

@@ -147,8 +147,9 @@ void vox_add64(int channel, ivec3 v, float x) {
 #endif
 
 // `coverage`: the fixed-point area of the triangle in v's column (COVERAGE_PASS); `sheetZ`: the
-// span of its plane over that area along the dominant axis (EDGE_SHEETS).
-void vox_accumulate(Tri tri, ivec3 v, uint coverage, vec2 sheetZ) {
+// span of its plane over that area along the dominant axis, `across`: the extent bits of that
+// area across it (EDGE_SHEETS).
+void vox_accumulate(Tri tri, ivec3 v, uint coverage, vec2 sheetZ, uint across) {
     vec3 b = vox_barycentrics(tri, vec3(v) + 0.5);
     vec2 uv = b.x * tri.uv[0] + b.y * tri.uv[1] + b.z * tri.uv[2];
     vec4 color = scene_vertexColor(tri.color[0], tri.color[1], tri.color[2], b);
@@ -168,6 +169,8 @@ void vox_accumulate(Tri tri, ivec3 v, uint coverage, vec2 sheetZ) {
         uvec2 span = vox_sheetSpanFixed(sheetZ, float(v[tri.axis]));
         imageAtomicMax(accSheetLo, v, span.x);
         imageAtomicMax(accSheetHi, v, span.y);
+        float k = float(v[tri.axis]);
+        imageAtomicOr(accSheetExtent, v, across | vox_extentBits(sheetZ.x - k, sheetZ.y - k, tri.axis));
     }
 #endif
 #elif defined(OPACITY_ONLY)
@@ -218,23 +221,27 @@ void vox_column(Tri tri, int column) {
     }
     uint coverage = 0u;
     vec2 sheetZ = vec2(0.0);
+    uint across = 0u;
 #ifdef COVERAGE_PASS
 #ifdef EDGE_SHEETS
     vec4 plane = vec4(n[a], n[b], n[d], dot(n, tri.p[0]));
 #else
     vec4 plane = vec4(0.0);
 #endif
-    vec3 areaSpan = vox_columnCoverageSpan(vec2(tri.p[0][a], tri.p[0][b]), vec2(tri.p[1][a], tri.p[1][b]),
-                                           vec2(tri.p[2][a], tri.p[2][b]), vec2(float(i), float(j)), plane);
-    coverage = vox_coverageFixed(areaSpan.x);
-    sheetZ = areaSpan.yz;
+    VoxColumnCut cut = vox_columnCut(vec2(tri.p[0][a], tri.p[0][b]), vec2(tri.p[1][a], tri.p[1][b]),
+                                     vec2(tri.p[2][a], tri.p[2][b]), vec2(float(i), float(j)), plane);
+    coverage = vox_coverageFixed(cut.area);
+    sheetZ = vec2(cut.zMin, cut.zMax);
+#ifdef EDGE_SHEETS
+    across = vox_extentBits(cut.boxLo.x, cut.boxHi.x, a) | vox_extentBits(cut.boxLo.y, cut.boxHi.y, b);
+#endif
 #endif
     for (int k = kLo; k <= kHi; ++k) {
         ivec3 v;
         v[a] = i;
         v[b] = j;
         v[d] = k;
-        if (vox_overlaps(tri, vec3(v) + 0.5)) vox_accumulate(tri, v, coverage, sheetZ);
+        if (vox_overlaps(tri, vec3(v) + 0.5)) vox_accumulate(tri, v, coverage, sheetZ, across);
     }
 }
 

@@ -26,7 +26,8 @@ VCT_CONST int VOX_GRID_GROUP = 4;   // 4x4x4 for per-voxel passes (resolve, inje
 // materials (allocated only when the scene has one: TWO_SIDED); emission r lo, r hi, g lo,
 // g hi, b lo, b hi; with vct.voxel.edges=coverage or sheet, the covered area of the voxel's
 // columns and the bits of the dominant axes that cross it (EDGE_COVERAGE); with sheet, the
-// span's two maxima (EDGE_SHEETS). GL guarantees 8 image units, so no pass binds them all as
+// span's two maxima and the bins of the voxel its surfaces reach along each axis (EDGE_SHEETS).
+// GL guarantees 8 image units, so no pass binds them all as
 // images: the geometry pass of voxelize.glsl binds accumulator k at image unit k (k <
 // VOX_ACC_EMISSION), the emission pass binds k at image unit k - VOX_ACC_EMISSION, the
 // coverage pass k at k - VOX_ACC_COVERAGE, and resolve.glsl reads those below VOX_ACC_SHEET_LO
@@ -41,7 +42,8 @@ VCT_CONST int VOX_ACC_COVERAGE = 14;
 VCT_CONST int VOX_ACC_AXES = 15;
 VCT_CONST int VOX_ACC_SHEET_LO = 16;  // vct.voxel.edges=sheet: VOX_SHEET_STEPS + 1 - the span's low end
 VCT_CONST int VOX_ACC_SHEET_HI = 17;  // and its high end (vox_sheetSpanFixed)
-VCT_CONST int VOX_ACC_COUNT = 18;
+VCT_CONST int VOX_ACC_SHEET_EXTENT = 18;  // the extent bits (vox_extentBits); kept as VoxelGrid::sheetExtents
+VCT_CONST int VOX_ACC_COUNT = 19;
 VCT_CONST int VOX_IMAGE_RESOLVE_OPACITY = 0;
 VCT_CONST int VOX_IMAGE_RESOLVE_ALBEDO = 1;
 VCT_CONST int VOX_IMAGE_RESOLVE_NORMAL = 2;
@@ -50,7 +52,7 @@ VCT_CONST int VOX_IMAGE_RESOLVE_TWO_SIDED = 4;
 // voxelize_sheets.glsl (vct.voxel.edges=sheet): its output image, and the texture unit of the
 // resolved opacity it reads (the accumulators keep theirs).
 VCT_CONST int VOX_IMAGE_SHEETS = 0;
-VCT_CONST int VOX_UNIT_SHEETS_OPACITY = 18;
+VCT_CONST int VOX_UNIT_SHEETS_OPACITY = 19;
 
 // Storage binding of the big-triangle list: uvec4 header {listed triangles, -, -, occupied
 // voxel count}, then triangle ids.
@@ -101,12 +103,23 @@ VCT_CONST float VOX_COVERAGE_STEPS = 1024.0f;
 VOX_FN bool vox_oneAxis(uint axes) { return axes != 0u && (axes & (axes - 1u)) == 0u; }
 VOX_FN int vox_singleAxis(uint axes) { return axes == 1u ? 0 : (axes == 2u ? 1 : 2); }
 
-// Area of the triangle (a, b, c), projected to 2D, inside the unit square at `lo`: the
-// triangle clipped by the square's four sides (Sutherland-Hodgman), then the shoelace sum;
-// and (vct.voxel.edges=sheet) the lowest and highest value over that clipped part of the plane
+// The part of a triangle inside one voxel column (vox_columnCut): its projected area, the lowest
+// and highest height of its plane over that part, and that part's bounding rectangle in the
+// column (both coordinates in [0, 1] from the column's corner).
+struct VoxColumnCut {
+    float area;
+    float zMin;
+    float zMax;
+    vec2 boxLo;
+    vec2 boxHi;
+};
+
+// The triangle (a, b, c), projected to 2D, clipped by the four sides of the unit square at `lo`
+// (Sutherland-Hodgman): its area (the shoelace sum), its bounding rectangle, and
+// (vct.voxel.edges=sheet) the lowest and highest value over the clipped part of the plane
 // height z = (plane.w - plane.x u - plane.y v) / plane.z (the triangle's plane, solved for its
-// dominant axis): returns (area, zMin, zMax).
-VOX_FN vec3 vox_columnCoverageSpan(vec2 a, vec2 b, vec2 c, vec2 lo, vec4 plane) {
+// dominant axis).
+VOX_FN VoxColumnCut vox_columnCut(vec2 a, vec2 b, vec2 c, vec2 lo, vec4 plane) {
     vec2 poly[7];
     vec2 next[7];
     poly[0] = a - lo;
@@ -129,26 +142,31 @@ VOX_FN vec3 vox_columnCoverageSpan(vec2 a, vec2 b, vec2 c, vec2 lo, vec4 plane) 
         for (int k = 0; k < n; ++k) poly[k] = next[k];
     }
     float twiceArea = 0.0f;
-    float zMin = 3.4e38f, zMax = -3.4e38f;
+    VoxColumnCut cut;
+    cut.zMin = 3.4e38f;
+    cut.zMax = -3.4e38f;
+    cut.boxLo = vec2(1.0f);
+    cut.boxHi = vec2(0.0f);
     for (int k = 0; k < n; ++k) {
         vec2 u = poly[k];
         vec2 v = poly[(k + 1) % n];
         twiceArea += u.x * v.y - v.x * u.y;
+        cut.boxLo = min(cut.boxLo, u);
+        cut.boxHi = max(cut.boxHi, u);
         if (plane.z != 0.0f) {
             float z = (plane.w - plane.x * (u.x + lo.x) - plane.y * (u.y + lo.y)) / plane.z;
-            zMin = min(zMin, z);
-            zMax = max(zMax, z);
+            cut.zMin = min(cut.zMin, z);
+            cut.zMax = max(cut.zMax, z);
         }
     }
-    return vec3(min(0.5f * max(twiceArea, -twiceArea), 1.0f), zMin, zMax);
+    cut.area = min(0.5f * max(twiceArea, -twiceArea), 1.0f);
+    return cut;
 }
 
-VOX_FN float vox_columnCoverage(vec2 a, vec2 b, vec2 c, vec2 lo) {
-    return vox_columnCoverageSpan(a, b, c, lo, vec4(0.0f)).x;
-}
+VOX_FN float vox_columnCoverage(vec2 a, vec2 b, vec2 c, vec2 lo) { return vox_columnCut(a, b, c, lo, vec4(0.0f)).area; }
 
 // vct.voxel.edges=sheet: where in its voxel a sheet lies. Each triangle that covers part of a
-// voxel's column adds the span of its plane over that part (vox_columnCoverageSpan), relative
+// voxel's column adds the span of its plane over that part (vox_columnCut), relative
 // to voxel k along the axis and clamped to it, in steps of 1 / VOX_SHEET_STEPS rounded
 // outwards; the voxel keeps the lowest and the highest (two atomic maxima: VOX_SHEET_STEPS + 1 -
 // lo, hi; zero-initialised accumulators read as no span). Exact in half floats.
@@ -164,6 +182,28 @@ VOX_FN vec4 vox_sheetTexel(float opacity, uint axes, uint loInv, uint hi) {
     float top = float(hi) / VOX_SHEET_STEPS;
     bool sheet = vox_oneAxis(axes) && loInv > 0u && lo <= top;
     return sheet ? vec4(opacity, lo, top, float(vox_singleAxis(axes))) : vec4(opacity, 0.0f, 0.0f, -1.0f);
+}
+
+// vct.voxel.edges=sheet: where in its voxel a sheet or a box lies across. Each triangle that
+// covers part of a voxel's column sets, per axis, the bins of the voxel (VOX_EXTENT_BINS of
+// them) its part reaches: across its dominant axis the bounding rectangle of its part of the
+// column (vox_columnCut), along it its plane's span relative to the voxel, both rounded outwards.
+// The voxel keeps their union (one atomic or: bits [VOX_EXTENT_BINS a, VOX_EXTENT_BINS (a + 1))
+// for axis a), so its extent along each axis holds every surface in it: a plate's rim or a
+// slab's corner where it lies in its voxel, not across the whole voxel (cone_sampleSheets).
+VCT_CONST int VOX_EXTENT_BINS = 10;
+VOX_FN uint vox_extentBits(float lo, float hi, int axis) {
+    int first = clamp(int(floor(clamp(lo, 0.0f, 1.0f) * float(VOX_EXTENT_BINS))), 0, VOX_EXTENT_BINS - 1);
+    int last = clamp(int(ceil(clamp(hi, 0.0f, 1.0f) * float(VOX_EXTENT_BINS))) - 1, first, VOX_EXTENT_BINS - 1);
+    uint bits = ((2u << uint(last)) - 1u) & ~((1u << uint(first)) - 1u);
+    return bits << uint(VOX_EXTENT_BINS * axis);
+}
+// The extent [lo, hi] (in the voxel, [0, 1]) along `axis` of a voxel's extent bits; the whole
+// voxel where no bin is set (outside the grid, or a test volume that records none).
+VOX_FN vec2 vox_extentSpan(uint bits, int axis) {
+    uint b = (bits >> uint(VOX_EXTENT_BINS * axis)) & ((1u << uint(VOX_EXTENT_BINS)) - 1u);
+    if (b == 0u) return vec2(0.0f, 1.0f);
+    return vec2(float(findLSB(b)), float(findMSB(b) + 1)) * (1.0f / float(VOX_EXTENT_BINS));
 }
 
 // One triangle's covered area in fixed point.

@@ -130,7 +130,10 @@ ConeDirectional bindGridTextures(bool gi, const VoxelGrid& grid, const ConeSetti
     if (directional == ConeDirectional::Six)
         for (int i = 0; i < 6; ++i) glBindTextureUnit(gpu::CONE_UNIT_ANISO + i, grid.anisoRadiance[i].id());
     if (directional == ConeDirectional::Packed) glBindTextureUnit(gpu::CONE_UNIT_ANISO, grid.anisoOpacity.id());
-    if (readsSheets(gi, grid, directional)) glBindTextureUnit(gpu::CONE_UNIT_SHEETS, grid.sheets.id());
+    if (readsSheets(gi, grid, directional)) {
+        glBindTextureUnit(gpu::CONE_UNIT_SHEETS, grid.sheets.id());
+        glBindTextureUnit(gpu::CONE_UNIT_SHEET_EXTENTS, grid.sheetExtents.id());
+    }
     return directional;
 }
 

@@ -65,6 +65,7 @@ struct LevelSampler {
     double directionalFetches = 3.0;
     // Level 0's sheets (SparseVoxelScene::sheet), read by AO's base samples over directional levels.
     std::unique_ptr<RadianceAcc> sheets;
+    std::unique_ptr<openvdb::tree::ValueAccessor<const openvdb::UInt32Tree>> sheetExtents;  // its extent bits
 
     LevelSampler(const SparseVoxelScene& v, const MarchParams& params, bool gi)
         : mp(&params), depth(v.depthLevels), directionalFetches(v.injected() ? 3.0 : 1.0) {
@@ -73,7 +74,10 @@ struct LevelSampler {
             for (const auto& g : v.radianceLevels) radiance.push_back(std::make_unique<RadianceAcc>(g->tree()));
             for (const auto& g : v.normalLevels) normal.push_back(std::make_unique<RadianceAcc>(g->tree()));
         }
-        if (readsSheets(v, gi)) sheets = std::make_unique<RadianceAcc>(v.sheet->tree());
+        if (readsSheets(v, gi)) {
+            sheets = std::make_unique<RadianceAcc>(v.sheet->tree());
+            sheetExtents = std::make_unique<openvdb::tree::ValueAccessor<const openvdb::UInt32Tree>>(*v.sheetExtent);
+        }
         for (size_t d = 0; d < 6; ++d)
             for (const auto& l : v.directional[d]) {
                 dirOpacity[d].push_back(std::make_unique<OpacityAcc>(l.opacity->tree()));
@@ -158,6 +162,8 @@ struct LevelSampler {
         if (!sheets->probeValue(ijk, span)) return glm::vec4(opacity0, 0.f, 0.f, -1.f);
         return glm::vec4(opacity0, span[0], span[1], span[2]);
     }
+    // Its extent bits (vox_extentBits), none (the whole voxel) where unoccupied.
+    uint32_t sheetExtent(const glm::ivec3& v) { return sheetExtents->getValue(openvdb::Coord(v.x, v.y, v.z)); }
 
     // The fetches of one directional sample at footprint 2^lod: the textures' own (one or
     // three, trilinear across levels), or, sharpened, one per axis at each of the levels it
@@ -190,7 +196,7 @@ struct LevelSampler {
             fetches += 1.0;
             return acrossLevels(lod, [&](int level) { return sampleLevel(p, level); });
         }
-        fetches += directionalSampleFetches(lod) + (lod < 1.f ? (sheets ? 8.0 : mp->sharpen > 1.f ? 3.0 : 1.0) : 0.0);
+        fetches += directionalSampleFetches(lod) + (lod < 1.f ? (sheets ? 16.0 : mp->sharpen > 1.f ? 3.0 : 1.0) : 0.0);
         glm::vec4 directional = sampleAniso(p, d, lod);
         if (lod < 1.f) {
             if (depth)

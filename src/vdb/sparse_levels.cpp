@@ -253,6 +253,7 @@ void updateSparseMemoryStats(SparseVoxelScene& voxels) {
         if (*g) s.memoryBytes += size_t((*g)->memUsage());
     if (voxels.twoSided) s.memoryBytes += size_t(voxels.twoSided->memUsage());
     if (voxels.sheet) s.memoryBytes += size_t(voxels.sheet->memUsage());
+    if (voxels.sheetExtent) s.memoryBytes += size_t(voxels.sheetExtent->memUsage());
     // Dense equivalent of the same channels in float32: per level, opacity (4 B) and radiance
     // (12 B) when held; level 0 also albedo, normal and emission (12 B each), and with two-sided
     // voxels their share (4 B) and, once injected, the facing normals (12 B).
@@ -263,7 +264,7 @@ void updateSparseMemoryStats(SparseVoxelScene& voxels) {
                           (level > 0 && level < int(voxels.normalLevels.size()) ? 12 : 0);
         if (level == 0)
             perVoxel += (voxels.albedo ? 12 : 0) + (voxels.normal ? 12 : 0) + (voxels.emission ? 12 : 0) +
-                        (voxels.twoSided ? 4 : 0) + (voxels.facingNormal ? 12 : 0) + (voxels.sheet ? 12 : 0);
+                        (voxels.twoSided ? 4 : 0) + (voxels.facingNormal ? 12 : 0) + (voxels.sheet ? 16 : 0);
         s.denseBytes += product(voxels.levelSize(level)) * perVoxel;
         s.denseCubeBytes += product(glm::ivec3(std::max(maxRes >> level, 1))) * perVoxel;
     }
@@ -306,6 +307,7 @@ SparseVoxelScene buildSparseVoxels(const Scene& scene, int voxelRes, bool inject
         if (*g) openvdb::tools::prune((*g)->tree());
     if (voxels.twoSided) openvdb::tools::prune(voxels.twoSided->tree());
     if (voxels.sheet) openvdb::tools::prune(voxels.sheet->tree());
+    if (voxels.sheetExtent) openvdb::tools::prune(*voxels.sheetExtent);
     updateSparseMemoryStats(voxels);
     return voxels;
 }

@@ -52,6 +52,7 @@ struct VoxelSums {
     uint64_t coverage = 0;  // vox_columnCoverage's fixed-point areas (edge coverage)
     uint32_t axes = 0;      // bit a: a triangle of dominant axis a crosses the voxel (edge coverage)
     uint32_t sheetLo = 0, sheetHi = 0;  // vox_sheetSpanFixed's maxima (vct.voxel.edges=sheet)
+    uint32_t extent = 0;                // vox_extentBits' union (vct.voxel.edges=sheet)
 
     void add(const VoxelSums& t) {
         for (int c = 0; c < 3; ++c) {
@@ -65,6 +66,7 @@ struct VoxelSums {
         axes |= t.axes;
         sheetLo = std::max(sheetLo, t.sheetLo);
         sheetHi = std::max(sheetHi, t.sheetHi);
+        extent |= t.extent;
     }
 };
 
@@ -138,9 +140,11 @@ glm::vec3 barycentrics(const Tri& tri, const glm::vec3& q) {
 }
 
 // vox_accumulate: adds the triangle's fixed-point attributes at voxel v, and with edge coverage
-// `coverage`, its column's covered area in fixed point, and its dominant axis.
+// `coverage`, its column's covered area in fixed point, and its dominant axis; with sheets the
+// span `sheetZ` of its plane over that area and the extent bits `across` of that area.
 void accumulate(const Scene& scene, const Tri& tri, const glm::ivec3& v, ThreadSums& ts,
-                openvdb::tree::ValueAccessor<openvdb::Int32Tree>& acc, uint32_t coverage, glm::vec2 sheetZ) {
+                openvdb::tree::ValueAccessor<openvdb::Int32Tree>& acc, uint32_t coverage, glm::vec2 sheetZ,
+                uint32_t across) {
     const glm::vec3 b = barycentrics(tri, glm::vec3(v) + 0.5f);
     const glm::vec2 uv = b.x * tri.uv[0] + b.y * tri.uv[1] + b.z * tri.uv[2];
     const glm::vec4 color = vertexColorAt(scene, tri.index, b);
@@ -167,6 +171,8 @@ void accumulate(const Scene& scene, const Tri& tri, const glm::ivec3& v, ThreadS
             const glm::uvec2 span = gpu::vox_sheetSpanFixed(sheetZ, float(v[tri.axis]));
             s.sheetLo = std::max(s.sheetLo, span.x);
             s.sheetHi = std::max(s.sheetHi, span.y);
+            const float k = float(v[tri.axis]);
+            s.extent |= across | gpu::vox_extentBits(sheetZ.x - k, sheetZ.y - k, tri.axis);
         }
     }
     if (!ts.attributes) return;
@@ -210,23 +216,25 @@ void voxelizeColumn(const Scene& scene, const Tri& tri, int i, int j, ThreadSums
         kLo = std::max(kLo, int(std::floor(zMin)) - 1);
         kHi = std::min(kHi, int(std::floor(zMax)) + 1);
     }
-    // vox_columnCoverageSpan: the column's covered area, and with sheets the plane's span over it.
+    // vox_columnCut: the column's covered area, and with sheets the plane's span over it and the
+    // extent bits of that part across the axis.
     const glm::vec4 plane = ts.sheets ? glm::vec4(n[a], n[b], n[d], glm::dot(n, tri.p[0])) : glm::vec4(0.f);
-    const glm::vec3 areaSpan =
-        ts.edgeCoverage ? gpu::vox_columnCoverageSpan(glm::vec2(tri.p[0][a], tri.p[0][b]),
-                                                      glm::vec2(tri.p[1][a], tri.p[1][b]),
-                                                      glm::vec2(tri.p[2][a], tri.p[2][b]), glm::vec2(float(i), float(j)),
-                                                      plane)
-                        : glm::vec3(0.f);
-    const uint32_t coverage = ts.edgeCoverage ? gpu::vox_coverageFixed(areaSpan.x) : 0u;
-    const glm::vec2 sheetZ(areaSpan.y, areaSpan.z);
+    gpu::VoxColumnCut cut{};
+    if (ts.edgeCoverage)
+        cut = gpu::vox_columnCut(glm::vec2(tri.p[0][a], tri.p[0][b]), glm::vec2(tri.p[1][a], tri.p[1][b]),
+                                 glm::vec2(tri.p[2][a], tri.p[2][b]), glm::vec2(float(i), float(j)), plane);
+    const uint32_t coverage = ts.edgeCoverage ? gpu::vox_coverageFixed(cut.area) : 0u;
+    const glm::vec2 sheetZ(cut.zMin, cut.zMax);
+    const uint32_t across = ts.sheets ? gpu::vox_extentBits(cut.boxLo.x, cut.boxHi.x, a) |
+                                            gpu::vox_extentBits(cut.boxLo.y, cut.boxHi.y, b)
+                                      : 0u;
     for (int k = kLo; k <= kHi; ++k) {
         glm::ivec3 v;
         v[a] = i;
         v[b] = j;
         v[d] = k;
         if (triangleOverlapsVoxel(tri.p, tri.faceN, glm::vec3(v) + 0.5f))
-            accumulate(scene, tri, v, ts, acc, coverage, sheetZ);
+            accumulate(scene, tri, v, ts, acc, coverage, sheetZ, across);
     }
 }
 
@@ -327,11 +335,15 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
         openvdb::UInt32Tree axes(topology, 0u, openvdb::TopologyCopy());
         // vct.voxel.edges=sheet: (lo, hi, axis) of vox_sheetTexel where the voxel holds a sheet,
         // inactive elsewhere.
+        // And every occupied voxel's extent bits (vox_extentBits).
         std::shared_ptr<openvdb::Vec3STree> sheet;
         std::unique_ptr<openvdb::tree::LeafManager<openvdb::Vec3STree>> sheetLeaves;
+        std::unique_ptr<openvdb::tree::LeafManager<openvdb::UInt32Tree>> extentLeaves;
         if (sheets) {
             sheet = std::make_shared<openvdb::Vec3STree>(topology, openvdb::Vec3s(0.f), openvdb::TopologyCopy());
             sheetLeaves = std::make_unique<openvdb::tree::LeafManager<openvdb::Vec3STree>>(*sheet);
+            out.sheetExtent = std::make_shared<openvdb::UInt32Tree>(topology, 0u, openvdb::TopologyCopy());
+            extentLeaves = std::make_unique<openvdb::tree::LeafManager<openvdb::UInt32Tree>>(*out.sheetExtent);
         }
         openvdb::tree::LeafManager<openvdb::UInt32Tree> coverageLeaves(coverage), axesLeaves(axes);
         tbb::parallel_for(tbb::blocked_range<size_t>(0, coverageLeaves.leafCount()),
@@ -345,6 +357,7 @@ SparseVoxelScene voxelizeSparse(const Scene& scene, const Bounds3& region, int v
                                       it.setValue(uint32_t(std::min<uint64_t>(s.coverage, UINT32_MAX)));
                                       axesLeaf.setValueOnly(it.pos(), s.axes);
                                       if (!sheetLeaves) continue;
+                                      extentLeaves->leaf(li).setValueOnly(it.pos(), s.extent);
                                       const glm::vec4 texel = gpu::vox_sheetTexel(0.f, s.axes, s.sheetLo, s.sheetHi);
                                       auto& sheetLeaf = sheetLeaves->leaf(li);
                                       if (texel.w >= 0.f)

@@ -66,6 +66,9 @@ struct SparseVoxelScene {
     // dominant axis, their span along it inside the voxel ([0, 1]); inactive elsewhere
     // (vox_sheetTexel; read with the opacity by gpu::cone_sampleSheets).
     openvdb::Vec3SGrid::Ptr sheet;
+    // Level 0, with `sheet`: every occupied voxel's extent bits (vox_extentBits), where in it
+    // along each axis its surfaces lie (cone_sampleSheets).
+    std::shared_ptr<openvdb::UInt32Tree> sheetExtent;
     // Level 0, set by injection when the scene has two-sided voxels: `normal`, with each
     // two-sided voxel's facing normal in place of its own (the GPU rewrites its normal texture).
     openvdb::Vec3SGrid::Ptr facingNormal;

@@ -88,7 +88,7 @@ size_t textureBytes(const GlTexture& t) {
 size_t voxelGridMemoryBytes(const VoxelGrid& g) {
     size_t total = textureBytes(g.opacity) + textureBytes(g.albedo) + textureBytes(g.normal) +
                    textureBytes(g.emission) + textureBytes(g.radiance) + textureBytes(g.twoSided) +
-                   textureBytes(g.sheets);
+                   textureBytes(g.sheets) + textureBytes(g.sheetExtents);
     for (const GlTexture& t : g.anisoRadiance) total += textureBytes(t);
     total += textureBytes(g.anisoOpacity);
     return total;

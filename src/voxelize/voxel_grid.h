@@ -49,6 +49,9 @@ struct VoxelGrid {
     // GL_RGBA16F, level 0 only, present with vct.voxel.edges=sheet: the sheet texels (opacity,
     // lo, hi, axis) that AO cones read at the base level (vox_sheetTexel, cone_sampleSheets).
     GlTexture sheets;
+    // GL_R32UI, level 0 only, with sheets: each voxel's extent bits (vox_extentBits), where in it
+    // along each axis its surfaces lie; cone_sampleSheets weighs a sheet or box across by them.
+    GlTexture sheetExtents;
     GlTexture radiance;  // GL_RGBA16F, 3D, mipmapped, premultiplied; empty until injection
     bool anisotropic = false;
     std::array<GlTexture, 6> anisoRadiance;  // see above; empty unless anisotropic and lit

@@ -26,11 +26,13 @@ const SettingsTable<VoxelSettings>& voxelSettings() {
                     "which puts a sheet's edge where it is; sheet = coverage, and the span of each such voxel's "
                     "sheets along their axis, where AO cones on directional levels meet them at the base level "
                     "(a sample sees a sheet only if its step crosses it, not a voxel early, nor through the tent "
-                    "beside it; a voxel where sheets of two axes meet is a box crossed the same way; a lane that "
-                    "meets a sheet near R is closed by the share of it that meets the sheet before R: 6 cones in "
-                    "auto lanes of base 16, sharpened, aimed, bias -2, the 18 off-screen cases pooled over five "
-                    "alignments, mean voxel error at 256^3 0.0075 (coverage) -> 0.0039, the per-doubling rule in "
-                    "all 18; 8 fetches a base sample, 10% more samples, 8 more bytes a voxel). Both backends");
+                    "beside it; each voxel also records where across it its surfaces lie, to a tenth of a voxel, "
+                    "so a rim is seen where it is; a voxel where sheets of two axes meet is a box crossed where "
+                    "its surfaces lie along the lane; a lane that meets a sheet near R is closed by the share of "
+                    "it that meets the sheet before R: 6 cones in auto lanes of base 16, sharpened, aimed, bias "
+                    "-2, the 18 off-screen cases pooled over five alignments, mean voxel error at 256^3 0.0075 "
+                    "(coverage) -> 0.0037, the per-doubling rule in all 18; 16 fetches a base sample, 10% more "
+                    "samples, 12 more bytes a voxel). Both backends");
     return table;
 }
 

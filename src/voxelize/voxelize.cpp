@@ -123,13 +123,13 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
     // measured at 512x257x512 (stability suite); lit grids of scenes with doubleSided materials
     // add the doubleSided weight (4) and the two-sided texture (8); a grid of opacity alone
     // (no attributes) about 16 (the weight, opacity and directional levels); edge coverage adds
-    // its two accumulators (8), sheets two more and their texture (16).
+    // its two accumulators (8), sheets three more and their two textures (20).
     const VoxelSettings voxelOptions = voxelSettings().read(params);
     const bool edgeCoverage = voxelOptions.edges != VoxelEdges::Occupied;
     const bool sheets = voxelOptions.edges == VoxelEdges::Sheet;
     const double voxels = double(grid.resolution.x) * grid.resolution.y * grid.resolution.z;
     const double bytesPerVoxel =
-        (!attributes ? 16.0 : twoSided ? 78.0 : 66.0) + (edgeCoverage ? 8.0 : 0.0) + (sheets ? 16.0 : 0.0);
+        (!attributes ? 16.0 : twoSided ? 78.0 : 66.0) + (edgeCoverage ? 8.0 : 0.0) + (sheets ? 20.0 : 0.0);
     const double needBytes = bytesPerVoxel * voxels, haveBytes = double(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
     if (haveBytes > 0.0 && needBytes > 0.5 * haveBytes)
         throw std::runtime_error(gridRefusal(grid, "needs about " + std::to_string(int(needBytes / 1e9)) +
@@ -244,6 +244,8 @@ VoxelGrid voxelizeGrid(const GpuScene& scene, VoxelGrid layout, const ParamMap& 
         glDispatchCompute(groupCount(res.x, g), groupCount(res.y, g), groupCount(res.z, g));
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
         glBindTextureUnit(gpu::VOX_UNIT_SHEETS_OPACITY, 0);
+        // The extent bits are read as they were accumulated.
+        grid.sheetExtents = std::move(acc[size_t(gpu::VOX_ACC_SHEET_EXTENT)]);
     }
 
     // Leave nothing bound to the (about to be freed) accumulators.

@@ -3,7 +3,8 @@
 // voxel. A sample sees the sheet only when its step crosses it, so a march that ends short of
 // the sheet stays open where the box a voxel wide closes it, one that crosses it closes, and a
 // sheet that covers a share c of every column passes 1 - c at any angle and phase. A lane that
-// meets a sheet near R is closed by the share of its directions that meet it before R.
+// meets a sheet near R is closed by the share of its directions that meet it before R. A plate's
+// rim is seen where it lies in its voxel, a slab's edge read as boxes where it lies along the lane.
 #include "cone/cone_march_shared.h"
 #include "cone/cone_set.h"
 #include "cone/cone_settings.h"
@@ -32,6 +33,7 @@ struct SheetVolume {
         const float in = sheetZ - std::floor(sheetZ);
         return plain ? glm::vec4(share, 0.f, 0.f, -1.f) : glm::vec4(share, in, in, 2.f);
     }
+    uint32_t sheetExtent(glm::ivec3) const { return 0u; }  // none recorded: the whole voxel
     glm::vec4 sample(glm::vec3 p, glm::vec3 d, float lod, float dt, glm::vec2 cap) {
         return glm::vec4(0.f, 0.f, 0.f, gpu::cone_sampleSheets(*this, p, d, lod, dt, cap));
     }
@@ -148,6 +150,75 @@ TEST(SheetMarch, OnlyLanesTakeACap) {
     ASSERT_GT(split.lanesPerCone, 1);
     EXPECT_NEAR(laneCapTangent(split.lanesPerCone, split.apertureDeg),
                 std::tan(0.5 * double(split.apertureDeg) * M_PI / 180.0), 1e-6);
+}
+
+// A plate's rim inside its voxel: a flat sheet at z = 10.5 (voxel layer 10) covering x < kRimX,
+// whose rim voxel (x = 10) records its extent across (vox_extentBits; y left unrecorded, the
+// whole voxel). `box`: the same voxels without their span (axis -1, opacity 1), a slab's edge
+// read as boxes, their surfaces in the voxels' upper 0.4 along z. `extentless`: no extent
+// recorded, the whole voxel.
+constexpr float kRimX = 10.4f;
+struct RimVolume {
+    bool box = false;
+    bool extentless = false;
+    float lod(float, glm::vec3) const { return 0.f; }
+    bool leaving(glm::vec3, glm::vec3, float) const { return false; }
+    glm::vec4 sheet(glm::ivec3 v) const {
+        if (v.z != 10 || v.x > 10) return glm::vec4(0.f, 0.f, 0.f, -1.f);
+        const float share = v.x < 10 ? 1.f : kRimX - 10.f;
+        return box ? glm::vec4(1.f, 0.f, 0.f, -1.f) : glm::vec4(share, 0.5f, 0.5f, 2.f);
+    }
+    uint32_t sheetExtent(glm::ivec3 v) const {
+        if (extentless || v.z != 10 || v.x > 10) return 0u;
+        const uint32_t across = gpu::vox_extentBits(0.f, v.x < 10 ? 1.f : kRimX - 10.f, 0);
+        if (box) return across | gpu::vox_extentBits(0.6f, 1.f, 2);
+        return v.x < 10 ? 0u : across | gpu::vox_extentBits(0.5f, 0.5f, 2);
+    }
+    glm::vec4 sample(glm::vec3 p, glm::vec3 d, float lod, float dt, glm::vec2 cap) {
+        return glm::vec4(0.f, 0.f, 0.f, gpu::cone_sampleSheets(*this, p, d, lod, dt, cap));
+    }
+    float facing(glm::vec3, glm::vec3, float, glm::vec4) const { return 1.f; }
+};
+
+// Opacity of a march up the z axis from (x, 20.3, 5.13) to height `end`.
+float rimAlphaTo(RimVolume& volume, float x, float end) {
+    const gpu::ConeMarch m{0.001f, gpu::CONE_DEFAULT_STEP, 1.f, 0.f, glm::vec3(0.f), 0.f, 0.f};
+    return gpu::cone_marchVolume(volume, m, glm::vec3(x, 20.3f, 5.13f), glm::vec3(0.f, 0.f, 1.f), 1.5f, 1.f,
+                                 end - 5.13f, 0.f)
+        .alpha;
+}
+float rimAlpha(RimVolume& volume, float x) { return rimAlphaTo(volume, x, 15.13f); }
+
+// A sample sees a voxel's surfaces where they lie across it: a lane crossing the plate at x sees
+// the share of its box one voxel wide about x that the plate covers, min(max(kRimX - (x - 1/2),
+// 0), 1), whichever voxel the rim is in. The tent about the rim voxel's centre saw its share
+// spread over the voxel: 0.24 at half a voxel past the rim, 0.76 half a voxel inside it.
+TEST(SheetMarch, APlatesRimIsSeenWhereItLiesInItsVoxel) {
+    RimVolume plate, tent;
+    tent.extentless = true;
+    double worstTent = 0.0;
+    for (int k = 0; k <= 96; ++k) {
+        const float x = 8.f + 0.05f * float(k);
+        const float expected = std::clamp(kRimX - (x - 0.5f), 0.f, 1.f);
+        EXPECT_NEAR(rimAlpha(plate, x), expected, 1e-3f) << "x " << x;
+        worstTent = std::max(worstTent, double(std::abs(rimAlpha(tent, x) - expected)));
+    }
+    EXPECT_GT(worstTent, 0.2) << "the tent spread the rim's share over its voxel";
+}
+
+// Read as boxes (a slab's edge, where its faces of two axes meet), the rim voxel's extent along
+// the lane's main axis decides where the lane crosses it: a lane that ends below the surfaces
+// in its voxel (here in its upper 0.4) stays open, where the whole voxel closed it; one that
+// ends past them is closed. Across the lane the box is the whole voxel (the tent).
+TEST(SheetMarch, ABoxIsCrossedWhereItsSurfacesLieAlongTheLane) {
+    RimVolume slab, whole;
+    slab.box = whole.box = true;
+    whole.extentless = true;
+    for (float x : {9.6f, 10.2f, 10.45f}) {
+        EXPECT_LT(rimAlphaTo(slab, x, 10.5f), 1e-6f) << "x " << x;
+        EXPECT_GT(rimAlphaTo(whole, x, 10.5f), 0.3f) << "x " << x << ": the whole voxel closed it";
+        EXPECT_NEAR(rimAlphaTo(slab, x, 12.f), rimAlphaTo(whole, x, 12.f), 1e-6f) << "x " << x;
+    }
 }
 
 }  // namespace

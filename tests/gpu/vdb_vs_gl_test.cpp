@@ -16,6 +16,7 @@
 #include "support/filter_precision.h"
 #include "vdb/sparse_cone.h"
 #include "voxelize/voxelize.h"
+#include "voxelize/voxelize_shared.h"
 
 #include <gtest/gtest.h>
 
@@ -243,6 +244,34 @@ TEST(VdbVsGl, SheetTexelsMatchTheSparseOnes) {
     EXPECT_EQ(kindDiffers, 0u);
     EXPECT_LE(spanDiffers, sheets / 500);
     EXPECT_LE(maxDiff, 1.0 / 1024.0 + 1e-6);
+
+    // The extent bits (vox_extentBits) of every occupied voxel, and how many hold less than the
+    // whole voxel across some axis (rims, the boxes' corners).
+    ASSERT_TRUE(grid.sheetExtents);
+    ASSERT_TRUE(sparse.sheetExtent);
+    std::vector<uint32_t> bits(size_t(r.x) * r.y * r.z);
+    glGetTextureImage(grid.sheetExtents.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, GLsizei(bits.size() * sizeof(uint32_t)),
+                      bits.data());
+    gl.checkErrors("vdb_vs_gl: sheet extents");
+    openvdb::tree::ValueAccessor<const openvdb::UInt32Tree> extents(*sparse.sheetExtent);
+    size_t occupied = 0, partial = 0, extentDiffers = 0;
+    forEachVoxel(r, [&](int x, int y, int z, size_t i) {
+        if (!(opacity[i] > 0.f)) return;
+        ++occupied;
+        const uint32_t c = extents.getValue({x, y, z});
+        extentDiffers += c != bits[i];
+        for (int a = 0; a < 3; ++a) {
+            const glm::vec2 e = gpu::vox_extentSpan(c, a);
+            if (e.y - e.x < 1.f) {
+                ++partial;
+                break;
+            }
+        }
+    });
+    std::printf("[vdb_vs_gl] sheet extents: %zu occupied voxels, %zu not whole across, %zu differ\n", occupied,
+                partial, extentDiffers);
+    EXPECT_GT(partial, occupied / 2) << "a sheet's voxels hold it along its axis";
+    EXPECT_LE(extentDiffers, occupied / 500);
 }
 
 struct Images {
