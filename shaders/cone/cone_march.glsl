@@ -102,10 +102,11 @@ vec4 cone_sampleBaseSharpened(vec3 tc, vec3 d) {
 
 #if CONE_ANISO
 // The base level at a sample of direction d, voxel-space p, footprint 2^lod, step dt: the sheet
-// texels (CONE_SHEETS: eight fetches), sharpened (vct.sharpen) or one linear fetch.
+// texels and their extent bits (CONE_SHEETS: sixteen fetches), sharpened (vct.sharpen) or one
+// linear fetch.
 vec4 cone_sampleBase(vec3 p, vec3 tc, vec3 d, float lod, float dt, vec2 cap) {
 #if defined(CONE_SHEETS)
-    cone_fetches += 8.0;
+    cone_fetches += 16.0;
     return vec4(0.0, 0.0, 0.0, cone_sampleSheets(p, d, lod, dt, cap));
 #elif defined(CONE_SHARPEN)
     return cone_sampleBaseSharpened(tc, d);
