@@ -191,6 +191,9 @@ VOX_FN vec4 vox_sheetTexel(float opacity, uint axes, uint loInv, uint hi) {
 // The voxel keeps their union (one atomic or: bits [VOX_EXTENT_BINS a, VOX_EXTENT_BINS (a + 1))
 // for axis a), so its extent along each axis holds every surface in it: a plate's rim or a
 // slab's corner where it lies in its voxel, not across the whole voxel (cone_sampleSheets).
+// VOX_EXTENT_BINS: 10, fixed: three fields of 10 bits fill the one 32-bit word an atomic or
+// takes; a tenth of a voxel is far below the lanes' footprints (one to several voxels at the
+// base level), and the rounding outwards keeps every surface inside its extent.
 VCT_CONST int VOX_EXTENT_BINS = 10;
 VOX_FN uint vox_extentBits(float lo, float hi, int axis) {
     int first = clamp(int(floor(clamp(lo, 0.0f, 1.0f) * float(VOX_EXTENT_BINS))), 0, VOX_EXTENT_BINS - 1);
