@@ -24,7 +24,7 @@
 VCT_BEGIN_NAMESPACE
 
 #ifdef __cplusplus
-using glm::acos; using glm::ceil; using glm::cos; using glm::findLSB; using glm::sin;
+using glm::acos; using glm::ceil; using glm::cos; using glm::sin;  // findLSB: shared_types.h
 #endif
 
 VCT_CONST int VBM_SECTORS = 32;

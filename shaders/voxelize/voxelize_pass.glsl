@@ -169,8 +169,7 @@ void vox_accumulate(Tri tri, ivec3 v, uint coverage, vec2 sheetZ, uint across) {
         uvec2 span = vox_sheetSpanFixed(sheetZ, float(v[tri.axis]));
         imageAtomicMax(accSheetLo, v, span.x);
         imageAtomicMax(accSheetHi, v, span.y);
-        float k = float(v[tri.axis]);
-        imageAtomicOr(accSheetExtent, v, across | vox_extentBits(sheetZ.x - k, sheetZ.y - k, tri.axis));
+        imageAtomicOr(accSheetExtent, v, vox_triangleExtentBits(across, sheetZ, float(v[tri.axis]), tri.axis));
     }
 #endif
 #elif defined(OPACITY_ONLY)

@@ -201,6 +201,11 @@ VOX_FN uint vox_extentBits(float lo, float hi, int axis) {
     uint bits = ((2u << uint(last)) - 1u) & ~((1u << uint(first)) - 1u);
     return bits << uint(VOX_EXTENT_BINS * axis);
 }
+// One triangle's extent bits in voxel k along its dominant axis `axis`: `across`, the bits of its
+// part of the column across the axis, and its plane's span `zSpan` relative to the voxel.
+VOX_FN uint vox_triangleExtentBits(uint across, vec2 zSpan, float k, int axis) {
+    return across | vox_extentBits(zSpan.x - k, zSpan.y - k, axis);
+}
 // The extent [lo, hi] (in the voxel, [0, 1]) along `axis` of a voxel's extent bits; the whole
 // voxel where no bin is set (outside the grid, or a test volume that records none).
 VOX_FN vec2 vox_extentSpan(uint bits, int axis) {

@@ -171,8 +171,7 @@ void accumulate(const Scene& scene, const Tri& tri, const glm::ivec3& v, ThreadS
             const glm::uvec2 span = gpu::vox_sheetSpanFixed(sheetZ, float(v[tri.axis]));
             s.sheetLo = std::max(s.sheetLo, span.x);
             s.sheetHi = std::max(s.sheetHi, span.y);
-            const float k = float(v[tri.axis]);
-            s.extent |= across | gpu::vox_extentBits(sheetZ.x - k, sheetZ.y - k, tri.axis);
+            s.extent |= gpu::vox_triangleExtentBits(across, sheetZ, float(v[tri.axis]), tri.axis);
         }
     }
     if (!ts.attributes) return;
