@@ -188,6 +188,12 @@ convergence-gi: build
 		--param vct.opacity=depth --markdown docs/convergence_gi_gl_lanes_depth.md
 	./$(BUILD)/bench_convergence --gi --res 32,64,128,256 --backend gl --param vct.aniso=0 \
 		--markdown docs/convergence_gi_gl_iso.md
+	# The lanes' march with the trilinear base and over sheets (32^3 and 64^3: a 128^3 case
+	# takes 5-10 minutes on 2 cores).
+	./$(BUILD)/bench_convergence --gi --res 32,64 --backend vdb $(LANES16_BIAS2) --param vct.voxel.edges=coverage \
+		--markdown docs/convergence_gi_vdb_lanes16_sharpen_aim_bias2_coverage.md
+	./$(BUILD)/bench_convergence --gi --res 32,64 --backend vdb $(LANES16_BIAS2) --param vct.voxel.edges=sheet \
+		--markdown docs/convergence_gi_vdb_lanes16_sharpen_aim_bias2_sheet.md
 	./$(BUILD)/bench_cornell_gi --res 32,64,128,256 --cone-model > docs/cornell_gi.txt.tmp
 	./$(BUILD)/bench_cornell_gi --res 32,64,128,256 --cone-model --param vct.opacity=depth >> docs/cornell_gi.txt.tmp
 	mv docs/cornell_gi.txt.tmp docs/cornell_gi.txt

@@ -7,10 +7,11 @@
 // the same both ways along an axis: VoxelGrid::anisoOpacity), CONE_DEPTH_LEVELS (the
 // directional levels hold optical depth, opacity_depth.h), CONE_SHARPEN (vct.sharpen > 1: each
 // axis fetched at its own coordinate, sharpened along it, and the two levels of a fractional
-// lod blended by hand), CONE_SHEETS (AO, vct.voxel.edges=sheet: the base level read from the
-// sheet texels, cone_sampleSheets). The depth levels are a compiled
-// variant, not a uniform branch: llvmpipe paid for the untaken branch's code in every sample
-// (AO 512^2 at trace-scale=4: trace stage 90 ms with the branch, 62 ms without).
+// lod blended by hand), CONE_SHEETS (vct.voxel.edges=sheet: the base level's opacity read from
+// the sheet texels, cone_sampleSheets; GI's radiance from its trilinear sample). The depth
+// levels are a compiled variant, not a uniform branch: llvmpipe paid for the untaken branch's
+// code in every sample (AO 512^2 at trace-scale=4: trace stage 90 ms with the branch, 62 ms
+// without).
 #include "cone/cone_common.glsl"
 #include "voxelize/opacity_depth.h"
 
@@ -102,10 +103,13 @@ vec4 cone_sampleBaseSharpened(vec3 tc, vec3 d) {
 
 #if CONE_ANISO
 // The base level at a sample of direction d, voxel-space p, footprint 2^lod, step dt: the sheet
-// texels and their extent bits (CONE_SHEETS: sixteen fetches), sharpened (vct.sharpen) or one
-// linear fetch.
+// texels and their extent bits (CONE_SHEETS: sixteen fetches; GI's radiance one more),
+// sharpened (vct.sharpen) or one linear fetch.
 vec4 cone_sampleBase(vec3 p, vec3 tc, vec3 d, float lod, float dt, vec2 cap) {
-#if defined(CONE_SHEETS)
+#if defined(CONE_SHEETS) && CONE_GI
+    cone_fetches += 16.0;
+    return cone_sheetRadiance(cone_sampleIso(tc, 0.0), cone_sampleSheets(p, d, lod, dt, cap));
+#elif defined(CONE_SHEETS)
     cone_fetches += 16.0;
     return vec4(0.0, 0.0, 0.0, cone_sampleSheets(p, d, lod, dt, cap));
 #elif defined(CONE_SHARPEN)

@@ -194,6 +194,14 @@ CONE_FN float cone_sampleSheets(CONE_VOLUME_PARAM vec3 p, vec3 d, float lod, flo
     float sheetLogT = log2(max(1.0f - min(blocked, 1.0f), 1.0e-7f)) * (texel / dt);
     return 1.0f - exp2(sheetLogT);
 }
+
+// GI over sheets: the premultiplied sample of opacity `alpha` (cone_sampleSheets) whose radiance
+// is that of the base level's trilinear sample `base` (premultiplied, so its radiance is
+// base.rgb / base.a). The sheets say where the surfaces are, the radiance texels what leaves
+// them; a sheet the tent does not reach (base.a = 0) has no radiance to give.
+CONE_FN vec4 cone_sheetRadiance(vec4 base, float alpha) {
+    return vec4(vec3(base) * (alpha / max(base.a, 1.0e-4f)), alpha);
+}
 #endif
 
 // The settings a march reads besides its volume (ConeUniforms::march and ::limits).

@@ -115,8 +115,8 @@ bool readsDepthLevels(const VoxelGrid& grid, ConeDirectional directional) {
     return grid.depthLevels && directional != ConeDirectional::None;
 }
 
-bool readsSheets(bool gi, const VoxelGrid& grid, ConeDirectional directional) {
-    return !gi && grid.sheets && directional != ConeDirectional::None;
+bool readsSheets(const VoxelGrid& grid, ConeDirectional directional) {
+    return grid.sheets && directional != ConeDirectional::None;
 }
 
 bool readsSharpened(const ConeSettings& settings, ConeDirectional directional) {
@@ -130,7 +130,7 @@ ConeDirectional bindGridTextures(bool gi, const VoxelGrid& grid, const ConeSetti
     if (directional == ConeDirectional::Six)
         for (int i = 0; i < 6; ++i) glBindTextureUnit(gpu::CONE_UNIT_ANISO + i, grid.anisoRadiance[i].id());
     if (directional == ConeDirectional::Packed) glBindTextureUnit(gpu::CONE_UNIT_ANISO, grid.anisoOpacity.id());
-    if (readsSheets(gi, grid, directional)) {
+    if (readsSheets(grid, directional)) {
         glBindTextureUnit(gpu::CONE_UNIT_SHEETS, grid.sheets.id());
         glBindTextureUnit(gpu::CONE_UNIT_SHEET_EXTENTS, grid.sheetExtents.id());
     }
@@ -146,9 +146,10 @@ BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffe
     bound.directional = bindGridTextures(gi, grid, settings);
     bound.depthLevels = readsDepthLevels(grid, bound.directional);
     bound.sharpen = readsSharpened(settings, bound.directional);
-    bound.sheets = readsSheets(gi, grid, bound.directional);
-    // Lane caps where the march reads sheets (cone_sampleSheets, laneCapTangent).
-    if (bound.sheets) {
+    bound.sheets = readsSheets(grid, bound.directional);
+    // Lane caps where AO's march reads sheets (cone_sampleSheets, laneCapTangent); GI's cones
+    // run to the grid's end, which no lane's cap is about.
+    if (bound.sheets && !gi) {
         const glm::ivec3 res = grid.resolution;
         const ConeLanes lanes = coneMarchLanes(settings, std::max(res.x, std::max(res.y, res.z)));
         u.caps.x = laneCapTangent(lanes.lanesPerCone, lanes.apertureDeg);

@@ -67,8 +67,11 @@ bool readsDepthLevels(const VoxelGrid& grid, ConeDirectional directional);
 // Whether a pass reading `directional` levels reads them with vct.sharpen's filter (the
 // programs' CONE_SHARPEN variant, whose s is ConeUniforms::camera.w).
 bool readsSharpened(const ConeSettings& settings, ConeDirectional directional);
-// Whether an AO pass reads the grid's sheet texels at the base level (vct.voxel.edges=sheet).
-bool readsSheets(bool gi, const VoxelGrid& grid, ConeDirectional directional);
+// Whether a pixel pass (AO or GI) reads the grid's sheet texels at the base level
+// (vct.voxel.edges=sheet over directional levels). The bounces do not: their voxels' gathers
+// keep the trilinear base (coneBounceProgramKey has no sheet variant), so a bounce costs what it
+// did.
+bool readsSheets(const VoxelGrid& grid, ConeDirectional directional);
 
 // One cone pass bound and ready for its program's dispatch: uniforms uploaded and bound,
 // the G-buffer, the grid's textures (opacity or radiance, directional mips, normals for
@@ -80,7 +83,7 @@ struct BoundConePass {
     ConeDirectional directional = ConeDirectional::None;
     bool depthLevels = false;
     bool sharpen = false;
-    bool sheets = false;  // AO reads grid.sheets at the base level (CONE_SHEETS)
+    bool sheets = false;  // the pass reads grid.sheets at the base level (CONE_SHEETS)
     ConeSlices slices;
 };
 BoundConePass bindConePass(bool gi, const VoxelGrid& grid, const GBuffer& gbuffer, float maxDistWorld, float sky,

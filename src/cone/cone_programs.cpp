@@ -9,7 +9,7 @@ namespace {
 ShaderDefines coneDefines(bool gi, bool aniso) { return {{"CONE_GI", gi ? "1" : "0"}, {"CONE_ANISO", aniso ? "1" : "0"}}; }
 ShaderDefines coneDefines(bool gi, ConeDirectional directional, bool depthLevels, bool sharpen, bool sheets = false) {
     ShaderDefines d = coneDefines(gi, directional != ConeDirectional::None);
-    if (sheets && !gi && directional != ConeDirectional::None) d.push_back({"CONE_SHEETS", "1"});
+    if (sheets && directional != ConeDirectional::None) d.push_back({"CONE_SHEETS", "1"});
     if (directional == ConeDirectional::Packed) d.push_back({"CONE_ANISO_PACKED", "1"});
     if (depthLevels && directional != ConeDirectional::None) d.push_back({"CONE_DEPTH_LEVELS", "1"});
     if (sharpen && directional != ConeDirectional::None) d.push_back({"CONE_SHARPEN", "1"});
@@ -71,7 +71,6 @@ std::vector<ProgramKey> coneProgramVariants() {
                     // Depth and the sharpened filter live in directional levels.
                     if ((depth || sharpen) && d == ConeDirectional::None) continue;
                     for (bool sheets : {false, true}) {
-                        if (sheets && gi) continue;  // AO reads the sheets
                         v.push_back(conePassProgramKey(gi, d, depth, sharpen, sheets));
                         v.push_back(coneCountProgramKey(gi, d, depth, sharpen, sheets));
                     }

@@ -15,8 +15,8 @@ enum class ConeDirectional { None, Six, Packed };
 // cone_ao.glsl / cone_gi.glsl over one dense grid, with its directional levels or without;
 // `depthLevels`: the directional levels hold optical depth (VoxelGrid::depthLevels);
 // `sharpen`: they are read with vct.sharpen's filter (the CONE_SHARPEN variant). Both are
-// ignored without directional levels; `sheets`: AO reads the base level's sheet texels
-// (VoxelGrid::sheets, the CONE_SHEETS variant; ignored for GI and without directional levels).
+// ignored without directional levels; `sheets`: the base level's opacity is read from its
+// sheet texels (VoxelGrid::sheets, the CONE_SHEETS variant; ignored without directional levels).
 ProgramKey conePassProgramKey(bool gi, ConeDirectional directional, bool depthLevels, bool sharpen,
                               bool sheets = false);
 // The same over a clipmap's levels (isotropic).

@@ -52,9 +52,9 @@ std::string voxelRegionExplanation(const RenderRequest& r) {
     if (edges == VoxelEdges::Coverage)
         s << "; each voxel holds the share of its column its sheets cover (vct.voxel.edges=coverage)";
     if (edges == VoxelEdges::Sheet)
-        s << "; each voxel holds the share of its column its sheets cover and where in it they lie, and an AO "
-             "lane meeting a sheet near the maximum distance is closed by its share that meets it before "
-             "(vct.voxel.edges=sheet)";
+        s << "; each voxel holds the share of its column its sheets cover and where in it they lie, the "
+             "pixels' AO and GI cones meet them there, and an AO lane meeting a sheet near the maximum "
+             "distance is closed by its share that meets it before (vct.voxel.edges=sheet)";
     return s.str();
 }
 

@@ -44,8 +44,10 @@ struct MarchParams {
     bool mirror = false;                // vct.below-plane=mirror (gpu::cone_mirrored)
 };
 
-// True where AO's base samples read the sheets (vct.voxel.edges=sheet over directional levels).
-bool readsSheets(const SparseVoxelScene& v, bool gi) { return v.sheet && !gi && !v.directional[0].empty(); }
+// True where a pixel gather's base samples read the sheets (vct.voxel.edges=sheet over
+// directional levels; AO and GI alike). The bounces keep the trilinear base, as the dense
+// bounce pass has no sheet variant (cone_gpu.h's readsSheets).
+bool readsSheets(const SparseVoxelScene& v) { return v.sheet && !v.directional[0].empty(); }
 
 // One thread's view of the levels: the volume of gpu::cone_marchVolume.
 struct LevelSampler {
@@ -63,18 +65,18 @@ struct LevelSampler {
     // Fetches of one directional sample: the dense AO grid's one texture of the three axes'
     // opacity (VoxelGrid::anisoOpacity), or a lit grid's three of its six RGBA textures.
     double directionalFetches = 3.0;
-    // Level 0's sheets (SparseVoxelScene::sheet), read by AO's base samples over directional levels.
+    // Level 0's sheets (SparseVoxelScene::sheet), read by a pixel gather's base samples (readsSheets).
     std::unique_ptr<RadianceAcc> sheets;
     std::unique_ptr<openvdb::tree::ValueAccessor<const openvdb::UInt32Tree>> sheetExtents;  // its extent bits
 
-    LevelSampler(const SparseVoxelScene& v, const MarchParams& params, bool gi)
+    LevelSampler(const SparseVoxelScene& v, const MarchParams& params, bool gi, bool readSheets)
         : mp(&params), depth(v.depthLevels), directionalFetches(v.injected() ? 3.0 : 1.0) {
         for (const auto& g : v.opacityLevels) opacity.push_back(std::make_unique<OpacityAcc>(g->tree()));
         if (gi) {
             for (const auto& g : v.radianceLevels) radiance.push_back(std::make_unique<RadianceAcc>(g->tree()));
             for (const auto& g : v.normalLevels) normal.push_back(std::make_unique<RadianceAcc>(g->tree()));
         }
-        if (readsSheets(v, gi)) {
+        if (readSheets) {
             sheets = std::make_unique<RadianceAcc>(v.sheet->tree());
             sheetExtents = std::make_unique<openvdb::tree::ValueAccessor<const openvdb::UInt32Tree>>(*v.sheetExtent);
         }
@@ -144,7 +146,11 @@ struct LevelSampler {
     // axis sharpened along that axis, blended as the directional levels' axes are
     // (cone_sampleBaseSharpened); else one trilinear fetch.
     glm::vec4 sampleBase(const glm::vec3& p, const glm::vec3& d, float lod, float dt, const glm::vec2& cap) {
-        if (sheets) return glm::vec4(0.f, 0.f, 0.f, gpu::cone_sampleSheets(*this, p, d, lod, dt, cap));  // vct.voxel.edges=sheet
+        if (sheets) {  // vct.voxel.edges=sheet; GI's radiance from the trilinear sample (cone_sheetRadiance)
+            const float alpha = gpu::cone_sampleSheets(*this, p, d, lod, dt, cap);
+            if (radiance.empty()) return glm::vec4(0.f, 0.f, 0.f, alpha);
+            return gpu::cone_sheetRadiance(sampleLevel(p, 0), alpha);
+        }
         if (!(mp->sharpen > 1.f)) return sampleLevel(p, 0);
         const openvdb::Vec3R xyz = levelCoord(p, 0);
         const glm::vec4 x = sampleLevelAt(sharpenAlong(xyz, 0), 0), y = sampleLevelAt(sharpenAlong(xyz, 1), 0),
@@ -196,7 +202,9 @@ struct LevelSampler {
             fetches += 1.0;
             return acrossLevels(lod, [&](int level) { return sampleLevel(p, level); });
         }
-        fetches += directionalSampleFetches(lod) + (lod < 1.f ? (sheets ? 16.0 : mp->sharpen > 1.f ? 3.0 : 1.0) : 0.0);
+        const double sheetFetches = radiance.empty() ? 16.0 : 17.0;  // GI: the radiance's trilinear fetch too
+        const double baseFetches = sheets ? sheetFetches : mp->sharpen > 1.f ? 3.0 : 1.0;
+        fetches += directionalSampleFetches(lod) + (lod < 1.f ? baseFetches : 0.0);
         glm::vec4 directional = sampleAniso(p, d, lod);
         if (lod < 1.f) {
             if (depth)
@@ -347,7 +355,7 @@ AoMarch aoMarch(const SparseVoxelScene& voxels, float radius, const ConeSettings
     AoMarch m;
     m.mp = marchParams(voxels, settings);
     // Lane caps where the march reads sheets (cone_sampleSheets, laneCapTangent).
-    if (readsSheets(voxels, false)) m.mp.march.capTan = laneCapTangent(m.mp.lanesPerCone, m.mp.laneApertureDeg);
+    if (readsSheets(voxels)) m.mp.march.capTan = laneCapTangent(m.mp.lanesPerCone, m.mp.laneApertureDeg);
     m.maxDist = radius / voxels.voxelSize;
     m.falloff = (settings.aoMapping == ConeAoMapping::Falloff && m.maxDist > 0.f)
                     ? gpu::CONE_FALLOFF_LAMBDA_R / m.maxDist
@@ -370,7 +378,7 @@ std::vector<float> sparseConeAO(const SparseVoxelScene& voxels, const std::vecto
     std::vector<float> ao(points.size(), 1.f);
     std::vector<double> samples(points.size(), 0.0), fetches(points.size(), 0.0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
-        LevelSampler sampler(voxels, m.mp, false);
+        LevelSampler sampler(voxels, m.mp, false, readsSheets(voxels));
         for (size_t i = r.begin(); i != r.end(); ++i) {
             glm::vec3 n, ng;
             if (!surface(points[i], n, ng)) continue;
@@ -392,7 +400,7 @@ SparseLanes sparseConeAOLanes(const SparseVoxelScene& voxels, const SparsePoint&
     out.apertureDeg = m.mp.laneApertureDeg;
     glm::vec3 n, ng;
     if (!surface(point, n, ng)) return out;
-    LevelSampler sampler(voxels, m.mp, false);
+    LevelSampler sampler(voxels, m.mp, false, readsSheets(voxels));
     gather(sampler, voxels, point.position, n, ng, m.maxDist, m.falloff, 0.f, &out.lanes);
     return out;
 }
@@ -412,7 +420,7 @@ std::vector<glm::vec3> sparseConeGI(const SparseVoxelScene& voxels, const std::v
     std::vector<glm::vec3> gi(points.size(), glm::vec3(0.f));
     std::vector<double> samples(points.size(), 0.0), fetches(points.size(), 0.0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
-        LevelSampler sampler(voxels, mp, true);
+        LevelSampler sampler(voxels, mp, true, readsSheets(voxels));
         for (size_t i = r.begin(); i != r.end(); ++i) {
             glm::vec3 n, ng;
             if (!surface(points[i], n, ng)) continue;
@@ -467,7 +475,7 @@ void traceSparseBounces(SparseVoxelScene& voxels, float sky, const ConeSettings&
         openvdb::Vec3SGrid::Ptr next = direct->deepCopy();
         openvdb::tree::LeafManager<openvdb::Vec3STree> leaves(next->tree());
         tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.leafCount()), [&](const tbb::blocked_range<size_t>& r) {
-            LevelSampler sampler(voxels, mp, true);
+            LevelSampler sampler(voxels, mp, true, false);  // the bounces' base stays trilinear (readsSheets)
             ConstAcc3 normalAcc(voxels.facing()->tree()), albedoAcc(voxels.albedo->tree());
             OpacityAcc opacityAcc(opacity);
             for (size_t li = r.begin(); li != r.end(); ++li)

@@ -178,8 +178,9 @@ TEST(RenderCli, ExplainPrintsRunAndSkippedPasses) {
                  "the share of its column its sheets cover (vct.voxel.edges=coverage)", "(vct.aim)", "e.png");
     explainCones("--voxel-res 16", "voxelize: world-space occupancy", "(vct.voxel.edges=coverage)", "o.png");
     explainCones("--voxel-res 16 --param vct.voxel.edges=sheet",
-                 "where in it they lie, and an AO lane meeting a sheet near the maximum distance is closed by its "
-                 "share that meets it before (vct.voxel.edges=sheet)",
+                 "where in it they lie, the pixels' AO and GI cones meet them there, and an AO lane meeting a "
+                 "sheet near the maximum distance is closed by its share that meets it before "
+                 "(vct.voxel.edges=sheet)",
                  "(vct.voxel.edges=coverage)", "s.png");
 }
 
