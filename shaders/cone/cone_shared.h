@@ -55,7 +55,7 @@ VCT_CONST int CONE_UNIT_NORMAL = 18;    // GI: grid.normal (mipmapped), for the 
 VCT_CONST int CONE_UNIT_BOUNCE_DIRECT = 19;  // cone_bounce.glsl: emission + direct light (level 0)
 VCT_CONST int CONE_UNIT_BOUNCE_ALBEDO = 20;  // cone_bounce.glsl: grid.albedo
 VCT_CONST int CONE_UNIT_BOUNCE_EMISSION = 21;  // cone_bounce.glsl: grid.emission (BOUNCE_EMITTED)
-VCT_CONST int CONE_UNIT_SHEETS = 22;  // AO with vct.voxel.edges=sheet: grid.sheets (CONE_SHEETS)
+VCT_CONST int CONE_UNIT_SHEETS = 22;  // pixel passes with vct.voxel.edges=sheet: grid.sheets (CONE_SHEETS)
 VCT_CONST int CONE_UNIT_SHEET_EXTENTS = 23;  // and grid.sheetExtents
 VCT_CONST int CONE_IMAGE_OUTPUT = 0;    // image unit of the output texture
 VCT_CONST int CONE_UBO_BINDING = 0;

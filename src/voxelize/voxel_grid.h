@@ -47,7 +47,8 @@ struct VoxelGrid {
     // (xyz, the winding side) and the doubleSided share of the voxel's weight (a).
     GlTexture twoSided;
     // GL_RGBA16F, level 0 only, present with vct.voxel.edges=sheet: the sheet texels (opacity,
-    // lo, hi, axis) that AO cones read at the base level (vox_sheetTexel, cone_sampleSheets).
+    // lo, hi, axis) that the pixels' AO and GI cones read at the base level (vox_sheetTexel,
+    // cone_sampleSheets).
     GlTexture sheets;
     // GL_R32UI, level 0 only, with sheets: each voxel's extent bits (vox_extentBits), where in it
     // along each axis its surfaces lie; cone_sampleSheets weighs a sheet or box across by them.
