@@ -106,12 +106,13 @@ vec4 cone_sampleBaseSharpened(vec3 tc, vec3 d) {
 // texels and their extent bits (CONE_SHEETS: sixteen fetches; GI's radiance one more),
 // sharpened (vct.sharpen) or one linear fetch.
 vec4 cone_sampleBase(vec3 p, vec3 tc, vec3 d, float lod, float dt, vec2 cap) {
-#if defined(CONE_SHEETS) && CONE_GI
+#if defined(CONE_SHEETS)
     cone_fetches += 16.0;
+#if CONE_GI
     return cone_sheetRadiance(cone_sampleIso(tc, 0.0), cone_sampleSheets(p, d, lod, dt, cap));
-#elif defined(CONE_SHEETS)
-    cone_fetches += 16.0;
+#else
     return vec4(0.0, 0.0, 0.0, cone_sampleSheets(p, d, lod, dt, cap));
+#endif
 #elif defined(CONE_SHARPEN)
     return cone_sampleBaseSharpened(tc, d);
 #else

@@ -49,6 +49,13 @@ struct MarchParams {
 // bounce pass has no sheet variant (cone_gpu.h's readsSheets).
 bool readsSheets(const SparseVoxelScene& v) { return v.sheet && !v.directional[0].empty(); }
 
+// Who marches through a LevelSampler: what it reads of the levels.
+enum class Gatherer {
+    PixelAO,  // a pixel's AO cones: opacity, and the sheets where readsSheets
+    PixelGI,  // a pixel's GI cones: opacity, radiance and normals, and the sheets where readsSheets
+    Bounce,   // a voxel's bounce gather: as PixelGI over the trilinear base, never the sheets
+};
+
 // One thread's view of the levels: the volume of gpu::cone_marchVolume.
 struct LevelSampler {
     const MarchParams* mp;
@@ -69,14 +76,15 @@ struct LevelSampler {
     std::unique_ptr<RadianceAcc> sheets;
     std::unique_ptr<openvdb::tree::ValueAccessor<const openvdb::UInt32Tree>> sheetExtents;  // its extent bits
 
-    LevelSampler(const SparseVoxelScene& v, const MarchParams& params, bool gi, bool readSheets)
+    LevelSampler(const SparseVoxelScene& v, const MarchParams& params, Gatherer who)
         : mp(&params), depth(v.depthLevels), directionalFetches(v.injected() ? 3.0 : 1.0) {
+        const bool gi = who != Gatherer::PixelAO;
         for (const auto& g : v.opacityLevels) opacity.push_back(std::make_unique<OpacityAcc>(g->tree()));
         if (gi) {
             for (const auto& g : v.radianceLevels) radiance.push_back(std::make_unique<RadianceAcc>(g->tree()));
             for (const auto& g : v.normalLevels) normal.push_back(std::make_unique<RadianceAcc>(g->tree()));
         }
-        if (readSheets) {
+        if (who != Gatherer::Bounce && readsSheets(v)) {
             sheets = std::make_unique<RadianceAcc>(v.sheet->tree());
             sheetExtents = std::make_unique<openvdb::tree::ValueAccessor<const openvdb::UInt32Tree>>(*v.sheetExtent);
         }
@@ -378,7 +386,7 @@ std::vector<float> sparseConeAO(const SparseVoxelScene& voxels, const std::vecto
     std::vector<float> ao(points.size(), 1.f);
     std::vector<double> samples(points.size(), 0.0), fetches(points.size(), 0.0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
-        LevelSampler sampler(voxels, m.mp, false, readsSheets(voxels));
+        LevelSampler sampler(voxels, m.mp, Gatherer::PixelAO);
         for (size_t i = r.begin(); i != r.end(); ++i) {
             glm::vec3 n, ng;
             if (!surface(points[i], n, ng)) continue;
@@ -400,7 +408,7 @@ SparseLanes sparseConeAOLanes(const SparseVoxelScene& voxels, const SparsePoint&
     out.apertureDeg = m.mp.laneApertureDeg;
     glm::vec3 n, ng;
     if (!surface(point, n, ng)) return out;
-    LevelSampler sampler(voxels, m.mp, false, readsSheets(voxels));
+    LevelSampler sampler(voxels, m.mp, Gatherer::PixelAO);
     gather(sampler, voxels, point.position, n, ng, m.maxDist, m.falloff, 0.f, &out.lanes);
     return out;
 }
@@ -420,7 +428,7 @@ std::vector<glm::vec3> sparseConeGI(const SparseVoxelScene& voxels, const std::v
     std::vector<glm::vec3> gi(points.size(), glm::vec3(0.f));
     std::vector<double> samples(points.size(), 0.0), fetches(points.size(), 0.0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
-        LevelSampler sampler(voxels, mp, true, readsSheets(voxels));
+        LevelSampler sampler(voxels, mp, Gatherer::PixelGI);
         for (size_t i = r.begin(); i != r.end(); ++i) {
             glm::vec3 n, ng;
             if (!surface(points[i], n, ng)) continue;
@@ -475,7 +483,7 @@ void traceSparseBounces(SparseVoxelScene& voxels, float sky, const ConeSettings&
         openvdb::Vec3SGrid::Ptr next = direct->deepCopy();
         openvdb::tree::LeafManager<openvdb::Vec3STree> leaves(next->tree());
         tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.leafCount()), [&](const tbb::blocked_range<size_t>& r) {
-            LevelSampler sampler(voxels, mp, true, false);  // the bounces' base stays trilinear (readsSheets)
+            LevelSampler sampler(voxels, mp, Gatherer::Bounce);
             ConstAcc3 normalAcc(voxels.facing()->tree()), albedoAcc(voxels.albedo->tree());
             OpacityAcc opacityAcc(opacity);
             for (size_t li = r.begin(); li != r.end(); ++li)
