@@ -45,6 +45,22 @@ layout(binding = CONE_UNIT_ANISO + 4) uniform sampler3D cone_anisoPZ;
 layout(binding = CONE_UNIT_ANISO + 5) uniform sampler3D cone_anisoNZ;
 #endif
 
+#ifdef CONE_SHEETS
+// cone_sampleSheets' light leaving voxel v: its base-level radiance over its opacity (GI; the
+// texel is premultiplied), none for AO or outside the grid. One fetch, made only for a voxel
+// whose sheet a step sees.
+vec3 cone_volumeSheetLight(ivec3 v) {
+#if CONE_GI
+    if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(u.gridResolution.xyz)))) return vec3(0.0);
+    cone_fetches += 1.0;
+    vec4 r = texelFetch(cone_isoTexture, v, 0);
+    return r.rgb / max(r.a, 1.0e-4);
+#else
+    return vec3(0.0);
+#endif
+}
+#endif
+
 vec4 cone_sampleIso(vec3 tc, float lod) {
     cone_fetches += 1.0;
 #if CONE_GI
@@ -103,16 +119,12 @@ vec4 cone_sampleBaseSharpened(vec3 tc, vec3 d) {
 
 #if CONE_ANISO
 // The base level at a sample of direction d, voxel-space p, footprint 2^lod, step dt: the sheet
-// texels and their extent bits (CONE_SHEETS: sixteen fetches; GI's radiance one more),
+// texels and their extent bits (CONE_SHEETS: sixteen fetches; GI's light one more a voxel seen),
 // sharpened (vct.sharpen) or one linear fetch.
 vec4 cone_sampleBase(vec3 p, vec3 tc, vec3 d, float lod, float dt, vec2 cap) {
 #if defined(CONE_SHEETS)
     cone_fetches += 16.0;
-#if CONE_GI
-    return cone_sheetRadiance(cone_sampleIso(tc, 0.0), cone_sampleSheets(p, d, lod, dt, cap));
-#else
-    return vec4(0.0, 0.0, 0.0, cone_sampleSheets(p, d, lod, dt, cap));
-#endif
+    return cone_sampleSheets(p, d, lod, dt, cap);
 #elif defined(CONE_SHARPEN)
     return cone_sampleBaseSharpened(tc, d);
 #else
@@ -209,5 +221,11 @@ float cone_volumeFacing(vec3 p, vec3 d, float lod, vec4 s) {
 ConeGather cone_gather(ConeGather g, vec3 pWorld, vec3 n, vec3 ng, float maxDist, float falloff, float sky) {
     // voxelFromWorld is a uniform scale plus a translation: directions keep their length.
     vec3 p = (u.voxelFromWorld * vec4(pWorld, 1.0)).xyz;
-    return cone_gatherVoxel(g, p, n, ng, u.march.z, u.march.z, maxDist, falloff, sky);
+#if defined(CONE_SHEETS) && CONE_GI
+    if ((u.trace.w & CONE_SPLIT_RESUME) == 0) cone_fetches += 27.0;  // once a pixel, as the sparse gather counts
+    float offset = cone_sheetStartOffset(p, ng, u.march.z);
+#else
+    float offset = u.march.z;
+#endif
+    return cone_gatherVoxel(g, p, n, ng, offset, offset, maxDist, falloff, sky);
 }

@@ -17,7 +17,8 @@
 //   facing(p, d, lod, s)   the weight of sample s's radiance for a cone along d (GI's facing
 //                          rule; 1 where the volume has none)
 // and, for cone_sampleSheets (vct.voxel.edges=sheet), sheet(v), the base level's sheet texel,
-// and sheetExtent(v), its extent bits.
+// sheetExtent(v), its extent bits, and sheetLight(v), the light leaving the voxel (GI; zero for
+// AO).
 // In C++ the volume is an object with these member functions (cone_marchVolume is a
 // template); in GLSL they are the functions cone_volumeLod, cone_volumeLeaving,
 // cone_volumeSample and cone_volumeFacing, declared below and defined by the includer.
@@ -41,6 +42,7 @@
 #define CONE_VOLUME_FACING(p, d, l, s) volume.facing(p, d, l, s)
 #define CONE_VOLUME_SHEET(v) volume.sheet(v)
 #define CONE_VOLUME_SHEET_EXTENT(v) volume.sheetExtent(v)
+#define CONE_VOLUME_SHEET_LIGHT(v) volume.sheetLight(v)
 #else
 #define CONE_VOLUME_TEMPLATE
 #define CONE_VOLUME_PARAM
@@ -51,9 +53,11 @@
 #define CONE_VOLUME_FACING(p, d, l, s) cone_volumeFacing(p, d, l, s)
 #define CONE_VOLUME_SHEET(v) cone_volumeSheet(v)
 #define CONE_VOLUME_SHEET_EXTENT(v) cone_volumeSheetExtent(v)
+#define CONE_VOLUME_SHEET_LIGHT(v) cone_volumeSheetLight(v)
 #ifdef CONE_SHEETS
 vec4 cone_volumeSheet(ivec3 v);
 uint cone_volumeSheetExtent(ivec3 v);
+vec3 cone_volumeSheetLight(ivec3 v);
 #endif
 float cone_volumeLod(float lod, vec3 x);
 bool cone_volumeLeaving(vec3 p, vec3 d, float texel);
@@ -90,6 +94,12 @@ VCT_BEGIN_NAMESPACE
 // crossing a wall just above the floor was counted short. The share composites as a
 // transmittance, written so that the march's step correction
 // (alpha' = 1 - (1 - alpha)^(dt / texel)) returns it.
+//
+// GI's light. The sample's light is that of the voxels whose sheets (or boxes) its step sees,
+// each voxel's own (the volume's sheetLight(v): its base-level radiance over its opacity),
+// weighted by what the step sees of it: the trilinear sample's light, rgb / a over the eight
+// voxels about the sample, blended in voxels the step does not cross (a sheet one voxel over a
+// dark floor was seen at down to half its light).
 //
 // The lane's cap. The cone model cuts each direction of a lane at R, so a lane whose ray
 // crosses a sheet near R is closed by the sheet only in the share of its directions that meet
@@ -143,17 +153,22 @@ CONE_FN float cone_sheetSeen(vec4 v, uint e, int a, vec3 cell, vec3 p, vec3 d, f
     return seen * cone_capShare(along, cap.y * sqrt(max(1.0f - d[a] * d[a], 0.0f)));
 }
 // One column along axis a: its voxels at `cell` and one further along a, counted once (the
-// larger).
-CONE_FN float cone_sheetColumn(vec4 v0, uint e0, vec4 v1, uint e1, int a, vec3 cell, vec3 p, vec3 d, float halfStep,
-                               vec2 cap, bool mainAxis) {
+// larger), as (seen l, seen) with l the light leaving the voxel seen (sheetLight, read only
+// where the step sees one).
+CONE_VOLUME_TEMPLATE
+CONE_FN vec4 cone_sheetColumn(CONE_VOLUME_PARAM vec4 v0, uint e0, vec4 v1, uint e1, int a, vec3 cell, vec3 p, vec3 d,
+                              float halfStep, vec2 cap, bool mainAxis) {
     vec3 next = cell;
     next[a] += 1.0f;
-    return max(cone_sheetSeen(v0, e0, a, cell, p, d, halfStep, cap, mainAxis),
-               cone_sheetSeen(v1, e1, a, next, p, d, halfStep, cap, mainAxis));
+    float s0 = cone_sheetSeen(v0, e0, a, cell, p, d, halfStep, cap, mainAxis);
+    float s1 = cone_sheetSeen(v1, e1, a, next, p, d, halfStep, cap, mainAxis);
+    float seen = max(s0, s1);
+    if (!(seen > 0.0f)) return vec4(0.0f);
+    return vec4(CONE_VOLUME_SHEET_LIGHT(ivec3(s0 >= s1 ? cell : next)) * seen, seen);
 }
 
 CONE_VOLUME_TEMPLATE
-CONE_FN float cone_sampleSheets(CONE_VOLUME_PARAM vec3 p, vec3 d, float lod, float dt, vec2 cap) {
+CONE_FN vec4 cone_sampleSheets(CONE_VOLUME_PARAM vec3 p, vec3 d, float lod, float dt, vec2 cap) {
     vec3 c0 = floor(p - vec3(0.5f));
     ivec3 i0 = ivec3(c0);
     vec4 t0 = CONE_VOLUME_SHEET(i0);
@@ -178,29 +193,47 @@ CONE_FN float cone_sampleSheets(CONE_VOLUME_PARAM vec3 p, vec3 d, float lod, flo
     vec3 cx = c0 + vec3(1.0f, 0.0f, 0.0f), cy = c0 + vec3(0.0f, 1.0f, 0.0f), cz = c0 + vec3(0.0f, 0.0f, 1.0f);
     vec3 cyz = c0 + vec3(0.0f, 1.0f, 1.0f), cxz = c0 + vec3(1.0f, 0.0f, 1.0f), cxy = c0 + vec3(1.0f, 1.0f, 0.0f);
     float hs = 0.5f * dt;
-    float blocked = cone_sheetColumn(t0, e0, t1, e1, 0, c0, p, d, hs, cap, mx) +
-                    cone_sheetColumn(t2, e2, t3, e3, 0, cy, p, d, hs, cap, mx) +
-                    cone_sheetColumn(t4, e4, t5, e5, 0, cz, p, d, hs, cap, mx) +
-                    cone_sheetColumn(t6, e6, t7, e7, 0, cyz, p, d, hs, cap, mx) +
-                    cone_sheetColumn(t0, e0, t2, e2, 1, c0, p, d, hs, cap, my) +
-                    cone_sheetColumn(t1, e1, t3, e3, 1, cx, p, d, hs, cap, my) +
-                    cone_sheetColumn(t4, e4, t6, e6, 1, cz, p, d, hs, cap, my) +
-                    cone_sheetColumn(t5, e5, t7, e7, 1, cxz, p, d, hs, cap, my) +
-                    cone_sheetColumn(t0, e0, t4, e4, 2, c0, p, d, hs, cap, mz) +
-                    cone_sheetColumn(t1, e1, t5, e5, 2, cx, p, d, hs, cap, mz) +
-                    cone_sheetColumn(t2, e2, t6, e6, 2, cy, p, d, hs, cap, mz) +
-                    cone_sheetColumn(t3, e3, t7, e7, 2, cxy, p, d, hs, cap, mz);
+    vec4 seen = cone_sheetColumn(CONE_VOLUME_ARG t0, e0, t1, e1, 0, c0, p, d, hs, cap, mx) +
+                cone_sheetColumn(CONE_VOLUME_ARG t2, e2, t3, e3, 0, cy, p, d, hs, cap, mx) +
+                cone_sheetColumn(CONE_VOLUME_ARG t4, e4, t5, e5, 0, cz, p, d, hs, cap, mx) +
+                cone_sheetColumn(CONE_VOLUME_ARG t6, e6, t7, e7, 0, cyz, p, d, hs, cap, mx) +
+                cone_sheetColumn(CONE_VOLUME_ARG t0, e0, t2, e2, 1, c0, p, d, hs, cap, my) +
+                cone_sheetColumn(CONE_VOLUME_ARG t1, e1, t3, e3, 1, cx, p, d, hs, cap, my) +
+                cone_sheetColumn(CONE_VOLUME_ARG t4, e4, t6, e6, 1, cz, p, d, hs, cap, my) +
+                cone_sheetColumn(CONE_VOLUME_ARG t5, e5, t7, e7, 1, cxz, p, d, hs, cap, my) +
+                cone_sheetColumn(CONE_VOLUME_ARG t0, e0, t4, e4, 2, c0, p, d, hs, cap, mz) +
+                cone_sheetColumn(CONE_VOLUME_ARG t1, e1, t5, e5, 2, cx, p, d, hs, cap, mz) +
+                cone_sheetColumn(CONE_VOLUME_ARG t2, e2, t6, e6, 2, cy, p, d, hs, cap, mz) +
+                cone_sheetColumn(CONE_VOLUME_ARG t3, e3, t7, e7, 2, cxy, p, d, hs, cap, mz);
+    float blocked = seen.w;
     float texel = exp2(max(lod, 0.0f));
     float sheetLogT = log2(max(1.0f - min(blocked, 1.0f), 1.0e-7f)) * (texel / dt);
-    return 1.0f - exp2(sheetLogT);
+    float alpha = 1.0f - exp2(sheetLogT);
+    // The light of what the step sees, each voxel's own weighted by what it sees of it.
+    return vec4(vec3(seen) * (alpha / max(blocked, 1.0e-7f)), alpha);
 }
 
-// GI over sheets: the premultiplied sample of opacity `alpha` (cone_sampleSheets) whose radiance
-// is that of the base level's trilinear sample `base` (premultiplied, so its radiance is
-// base.rgb / base.a). The sheets say where the surfaces are, the radiance texels what leaves
-// them; a sheet the tent does not reach (base.a = 0) has no radiance to give.
-CONE_FN vec4 cone_sheetRadiance(vec4 base, float alpha) {
-    return vec4(vec3(base) * (alpha / max(base.a, 1.0e-4f)), alpha);
+// GI over sheets: the offset of a pixel's lanes' start up ng from voxel-space point p:
+// CONE_SHEET_START (at most `offset`) where no other surface is near, else `offset`, which the
+// trilinear base has always needed to clear a surface's voxels. Near is a box (a voxel without a
+// sheet, where sheets of two axes meet: a wall's foot) or a sheet across another axis than ng's
+// in the 3 x 3 x 3 voxels about that start: a box's extent is met by every lane's first step
+// there, the lanes that head away from its surfaces too, and the light of a wall's foot is
+// that voxel's, the dark floor's with the wall's.
+CONE_VOLUME_TEMPLATE
+CONE_FN float cone_sheetStartOffset(CONE_VOLUME_PARAM vec3 p, vec3 ng, float offset) {
+    float lifted = min(offset, CONE_SHEET_START);
+    ivec3 c = ivec3(floor(p + ng * lifted));
+    vec3 an = abs(ng);
+    int axis = an.x >= an.y && an.x >= an.z ? 0 : an.y >= an.z ? 1 : 2;
+    bool near = false;
+    for (int z = -1; z <= 1; ++z)
+        for (int y = -1; y <= 1; ++y)
+            for (int x = -1; x <= 1; ++x) {
+                vec4 s = CONE_VOLUME_SHEET(c + ivec3(x, y, z));
+                near = near || (s.x > 0.0f && int(s.w) != axis);
+            }
+    return near ? offset : lifted;
 }
 #endif
 

@@ -154,11 +154,7 @@ struct LevelSampler {
     // axis sharpened along that axis, blended as the directional levels' axes are
     // (cone_sampleBaseSharpened); else one trilinear fetch.
     glm::vec4 sampleBase(const glm::vec3& p, const glm::vec3& d, float lod, float dt, const glm::vec2& cap) {
-        if (sheets) {  // vct.voxel.edges=sheet; GI's radiance from the trilinear sample (cone_sheetRadiance)
-            const float alpha = gpu::cone_sampleSheets(*this, p, d, lod, dt, cap);
-            if (radiance.empty()) return glm::vec4(0.f, 0.f, 0.f, alpha);
-            return gpu::cone_sheetRadiance(sampleLevel(p, 0), alpha);
-        }
+        if (sheets) return gpu::cone_sampleSheets(*this, p, d, lod, dt, cap);  // vct.voxel.edges=sheet
         if (!(mp->sharpen > 1.f)) return sampleLevel(p, 0);
         const openvdb::Vec3R xyz = levelCoord(p, 0);
         const glm::vec4 x = sampleLevelAt(sharpenAlong(xyz, 0), 0), y = sampleLevelAt(sharpenAlong(xyz, 1), 0),
@@ -178,6 +174,16 @@ struct LevelSampler {
     }
     // Its extent bits (vox_extentBits), none (the whole voxel) where unoccupied.
     uint32_t sheetExtent(const glm::ivec3& v) { return sheetExtents->getValue(openvdb::Coord(v.x, v.y, v.z)); }
+    // The light leaving voxel v (GI): its base-level radiance over its opacity; none for AO. One
+    // fetch (cone_volumeSheetLight), inside the grid.
+    glm::vec3 sheetLight(const glm::ivec3& v) {
+        if (radiance.empty()) return glm::vec3(0.f);
+        if (glm::any(glm::lessThan(v, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(v, glm::ivec3(mp->res)))) return glm::vec3(0.f);
+        fetches += 1.0;
+        const openvdb::Coord ijk(v.x, v.y, v.z);
+        const openvdb::Vec3s c = radiance[0]->getValue(ijk);
+        return glm::vec3(c[0], c[1], c[2]) / std::max(opacity[0]->getValue(ijk), 1.0e-4f);
+    }
 
     // The fetches of one directional sample at footprint 2^lod: the textures' own (one or
     // three, trilinear across levels), or, sharpened, one per axis at each of the levels it
@@ -210,8 +216,7 @@ struct LevelSampler {
             fetches += 1.0;
             return acrossLevels(lod, [&](int level) { return sampleLevel(p, level); });
         }
-        const double sheetFetches = radiance.empty() ? 16.0 : 17.0;  // GI: the radiance's trilinear fetch too
-        const double baseFetches = sheets ? sheetFetches : mp->sharpen > 1.f ? 3.0 : 1.0;
+        const double baseFetches = sheets ? 16.0 : mp->sharpen > 1.f ? 3.0 : 1.0;  // GI's sheetLight counts its own
         fetches += directionalSampleFetches(lod) + (lod < 1.f ? baseFetches : 0.0);
         glm::vec4 directional = sampleAniso(p, d, lod);
         if (lod < 1.f) {
@@ -307,12 +312,17 @@ Gather gatherVoxel(LevelSampler& sampler, const glm::vec3& p,
     return g;
 }
 
-// The pixel cones' gather (cone_gather): from the surface point, offset and plane height alike.
+// The pixel cones' gather (cone_gather): from the surface point, offset and plane height alike
+// (GI over sheets: the start's, cone_sheetStartOffset).
 Gather gather(LevelSampler& sampler, const SparseVoxelScene& v,
               const glm::vec3& pWorld, const glm::vec3& n, const glm::vec3& ng, float maxDist, float falloff,
               float sky, std::vector<SparseLane>* lanes = nullptr) {
     const glm::vec3 p = glm::vec3(v.voxelFromWorld * glm::vec4(pWorld, 1.f));
-    const float offset = sampler.mp->offset;
+    float offset = sampler.mp->offset;
+    if (sampler.sheets && !sampler.radiance.empty()) {  // GI over sheets: gpu::cone_sheetStartOffset
+        sampler.fetches += 27.0;
+        offset = gpu::cone_sheetStartOffset(sampler, p, ng, offset);
+    }
     return gatherVoxel(sampler, p, n, ng, offset, offset, maxDist, falloff, sky, lanes);
 }
 

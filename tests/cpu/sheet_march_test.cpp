@@ -5,6 +5,7 @@
 // sheet that covers a share c of every column passes 1 - c at any angle and phase. A lane that
 // meets a sheet near R is closed by the share of its directions that meet it before R. A plate's
 // rim is seen where it lies in its voxel, a slab's edge read as boxes where it lies along the lane.
+// GI's light is that of the sheets a step sees, each weighted by what it sees of it.
 #include "cone/cone_march_shared.h"
 #include "cone/cone_set.h"
 #include "cone/cone_settings.h"
@@ -34,8 +35,9 @@ struct SheetVolume {
         return plain ? glm::vec4(share, 0.f, 0.f, -1.f) : glm::vec4(share, in, in, 2.f);
     }
     uint32_t sheetExtent(glm::ivec3) const { return 0u; }  // none recorded: the whole voxel
+    glm::vec3 sheetLight(glm::ivec3) const { return glm::vec3(0.f); }  // AO: no light
     glm::vec4 sample(glm::vec3 p, glm::vec3 d, float lod, float dt, glm::vec2 cap) {
-        return glm::vec4(0.f, 0.f, 0.f, gpu::cone_sampleSheets(*this, p, d, lod, dt, cap));
+        return gpu::cone_sampleSheets(*this, p, d, lod, dt, cap);
     }
     float facing(glm::vec3, glm::vec3, float, glm::vec4) const { return 1.f; }
 };
@@ -174,8 +176,9 @@ struct RimVolume {
         if (box) return across | gpu::vox_extentBits(0.6f, 1.f, 2);
         return v.x < 10 ? 0u : across | gpu::vox_extentBits(0.5f, 0.5f, 2);
     }
+    glm::vec3 sheetLight(glm::ivec3) const { return glm::vec3(0.f); }  // AO: no light
     glm::vec4 sample(glm::vec3 p, glm::vec3 d, float lod, float dt, glm::vec2 cap) {
-        return glm::vec4(0.f, 0.f, 0.f, gpu::cone_sampleSheets(*this, p, d, lod, dt, cap));
+        return gpu::cone_sampleSheets(*this, p, d, lod, dt, cap);
     }
     float facing(glm::vec3, glm::vec3, float, glm::vec4) const { return 1.f; }
 };
@@ -219,6 +222,70 @@ TEST(SheetMarch, ABoxIsCrossedWhereItsSurfacesLieAlongTheLane) {
         EXPECT_GT(rimAlphaTo(whole, x, 10.5f), 0.3f) << "x " << x << ": the whole voxel closed it";
         EXPECT_NEAR(rimAlphaTo(slab, x, 12.f), rimAlphaTo(whole, x, 12.f), 1e-6f) << "x " << x;
     }
+}
+
+// GI over sheets: a sheet at z = 10.8 in the layer z in [10, 11), lit `left` where x < 10 and
+// `right` from x = 10, under a dark box layer z in [11, 12) (a non-emitting surface one voxel up).
+struct LitSheetVolume {
+    glm::vec3 left{1.f, 0.5f, 0.25f}, right{0.f, 2.f, 4.f};
+    float lod(float, glm::vec3) const { return 0.f; }
+    bool leaving(glm::vec3, glm::vec3, float) const { return false; }
+    glm::vec4 sheet(glm::ivec3 v) const {
+        if (v.z == 10) return glm::vec4(1.f, 0.8f, 0.8f, 2.f);
+        if (v.z == 11) return glm::vec4(1.f, 0.f, 0.f, -1.f);
+        return glm::vec4(0.f, 0.f, 0.f, -1.f);
+    }
+    uint32_t sheetExtent(glm::ivec3) const { return 0u; }
+    glm::vec3 sheetLight(glm::ivec3 v) const { return v.z != 10 ? glm::vec3(0.f) : v.x < 10 ? left : right; }
+};
+
+// The light a step sees is the sheet's own where it crosses only the sheet (the trilinear
+// radiance at z = 10.8 would blend in the dark layer above with weight 0.3), and the sheets'
+// lights weighted by what it sees of each where the sample's box straddles two.
+TEST(SheetMarch, AStepSeesTheLightOfTheSheetsItCrosses) {
+    LitSheetVolume v;
+    const glm::vec3 up(0.f, 0.f, 1.f);
+    auto light = [&](glm::vec3 p) {
+        const glm::vec4 s = gpu::cone_sampleSheets(v, p, up, 0.f, 0.2f, glm::vec2(0.f));
+        EXPECT_NEAR(s.w, 1.f, 1e-6f) << "the step crosses the opaque sheet";
+        return glm::vec3(s) / s.w;
+    };
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(light(glm::vec3(5.5f, 5.5f, 10.8f))[i], v.left[i], 1e-5f);
+        EXPECT_NEAR(light(glm::vec3(14.5f, 5.5f, 10.75f))[i], v.right[i], 1e-5f);
+        EXPECT_NEAR(light(glm::vec3(10.f, 5.5f, 10.85f))[i], 0.5f * (v.left[i] + v.right[i]), 1e-5f);
+    }
+    // A step short of the sheet sees nothing, and gives no light.
+    EXPECT_EQ(gpu::cone_sampleSheets(v, glm::vec3(5.5f, 5.5f, 10.3f), up, 0.f, 0.2f, glm::vec2(0.f)), glm::vec4(0.f));
+}
+
+// A floor (sheets across y at y = 0.2 in the layer y in [0, 1)) with a plate 1.3 voxels above it
+// (layer 1, across y), and a wall across x at x = 10.5 from the floor up (its foot, voxel column x
+// = 10 of layer 0, a box where the two meet).
+struct FloorWallVolume {
+    glm::vec4 sheet(glm::ivec3 v) const {
+        if (v.x == 10 && v.y == 0) return glm::vec4(1.f, 0.f, 0.f, -1.f);
+        if (v.x == 10 && v.y > 0) return glm::vec4(1.f, 0.5f, 0.5f, 0.f);
+        if (v.y == 0) return glm::vec4(1.f, 0.2f, 0.2f, 1.f);
+        if (v.y == 1 && v.x < 6) return glm::vec4(1.f, 0.5f, 0.5f, 1.f);
+        return glm::vec4(0.f, 0.f, 0.f, -1.f);
+    }
+};
+
+// GI over sheets: a pixel's lanes start CONE_SHEET_START voxels up where no other surface is
+// within a voxel of that start (under the low plate too, whose sheet lies across the same
+// axis), and at the offset beside the wall and its foot.
+TEST(SheetMarch, LanesStartHalfAVoxelUpAwayFromOtherSurfaces) {
+    FloorWallVolume v;
+    const glm::vec3 up(0.f, 1.f, 0.f);
+    EXPECT_EQ(gpu::cone_sheetStartOffset(v, glm::vec3(3.5f, 0.2f, 5.5f), up, 1.5f), gpu::CONE_SHEET_START);
+    EXPECT_EQ(gpu::cone_sheetStartOffset(v, glm::vec3(7.9f, 0.2f, 5.5f), up, 1.5f), gpu::CONE_SHEET_START);
+    EXPECT_EQ(gpu::cone_sheetStartOffset(v, glm::vec3(13.1f, 0.2f, 5.5f), up, 1.5f), gpu::CONE_SHEET_START);
+    EXPECT_EQ(gpu::cone_sheetStartOffset(v, glm::vec3(3.5f, 0.2f, 5.5f), glm::normalize(glm::vec3(0.5f, 1.f, 0.f)), 1.5f),
+              gpu::CONE_SHEET_START);
+    for (float x : {9.2f, 10.3f, 11.9f})
+        EXPECT_EQ(gpu::cone_sheetStartOffset(v, glm::vec3(x, 0.2f, 5.5f), up, 1.5f), 1.5f) << "x " << x;
+    EXPECT_EQ(gpu::cone_sheetStartOffset(v, glm::vec3(3.5f, 0.2f, 5.5f), up, 0.25f), 0.25f) << "never above the offset";
 }
 
 }  // namespace
