@@ -8,24 +8,28 @@
 // directional levels hold optical depth, opacity_depth.h), CONE_SHARPEN (vct.sharpen > 1: each
 // axis fetched at its own coordinate, sharpened along it, and the two levels of a fractional
 // lod blended by hand), CONE_SHEETS (vct.voxel.edges=sheet: the base level's opacity read from
-// the sheet texels, cone_sampleSheets; GI's radiance from its trilinear sample). The depth
-// levels are a compiled variant, not a uniform branch: llvmpipe paid for the untaken branch's
-// code in every sample (AO 512^2 at trace-scale=4: trace stage 90 ms with the branch, 62 ms
-// without).
+// the sheet texels, cone_sampleSheets; GI's light that of the voxels whose sheets a step
+// sees). The depth levels are a compiled variant, not a uniform branch: llvmpipe paid for the
+// untaken branch's code in every sample (AO 512^2 at trace-scale=4: trace stage 90 ms with the
+// branch, 62 ms without).
 #include "cone/cone_common.glsl"
 #include "voxelize/opacity_depth.h"
 
 #ifdef CONE_SHEETS
+// Whether voxel v lies outside the grid, where the sheet reads below find nothing.
+bool cone_outsideGrid(ivec3 v) {
+    return any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(u.gridResolution.xyz)));
+}
 layout(binding = CONE_UNIT_SHEETS) uniform sampler3D cone_sheetTexture;
 // cone_sampleSheets' texel of voxel v (VoxelGrid::sheets); outside the grid none.
 vec4 cone_volumeSheet(ivec3 v) {
-    if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(u.gridResolution.xyz)))) return vec4(0.0, 0.0, 0.0, -1.0);
+    if (cone_outsideGrid(v)) return vec4(0.0, 0.0, 0.0, -1.0);
     return texelFetch(cone_sheetTexture, v, 0);
 }
 layout(binding = CONE_UNIT_SHEET_EXTENTS) uniform usampler3D cone_sheetExtentTexture;
 // Its extent bits (VoxelGrid::sheetExtents); outside the grid none (the whole voxel).
 uint cone_volumeSheetExtent(ivec3 v) {
-    if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(u.gridResolution.xyz)))) return 0u;
+    if (cone_outsideGrid(v)) return 0u;
     return texelFetch(cone_sheetExtentTexture, v, 0).r;
 }
 #endif
@@ -51,7 +55,7 @@ layout(binding = CONE_UNIT_ANISO + 5) uniform sampler3D cone_anisoNZ;
 // whose sheet a step sees.
 vec3 cone_volumeSheetLight(ivec3 v) {
 #if CONE_GI
-    if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(u.gridResolution.xyz)))) return vec3(0.0);
+    if (cone_outsideGrid(v)) return vec3(0.0);
     cone_fetches += 1.0;
     vec4 r = texelFetch(cone_isoTexture, v, 0);
     return r.rgb / max(r.a, 1.0e-4);
