@@ -226,7 +226,7 @@ ConeGather cone_gather(ConeGather g, vec3 pWorld, vec3 n, vec3 ng, float maxDist
     // voxelFromWorld is a uniform scale plus a translation: directions keep their length.
     vec3 p = (u.voxelFromWorld * vec4(pWorld, 1.0)).xyz;
 #if defined(CONE_SHEETS) && CONE_GI
-    if ((u.trace.w & CONE_SPLIT_RESUME) == 0) cone_fetches += 27.0;  // once a pixel, as the sparse gather counts
+    if ((u.trace.w & CONE_SPLIT_RESUME) == 0) cone_fetches += CONE_SHEET_START_FETCHES;  // once a pixel, as the sparse gather counts
     float offset = cone_sheetStartOffset(p, ng, u.march.z);
 #else
     float offset = u.march.z;

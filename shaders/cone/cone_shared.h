@@ -276,6 +276,9 @@ CONE_FN float cone_capZone(float maxDist, float tanAlpha) { return maxDist * tan
 // voxels up, whose sheet no step then crosses, and moved each lane 1.5 voxels sideways of the
 // cone model's; 0.5 took the 12 open emitting cases' mean voxel error at 64^3 from 0.069 to 0.023.
 VCT_CONST float CONE_SHEET_START = 0.5f;
+// The sheet texels cone_sheetStartOffset reads about a pixel's start (3 x 3 x 3), counted once a
+// pixel in both backends' fetches (cone/cone_cost.h).
+VCT_CONST float CONE_SHEET_START_FETCHES = 27.0f;
 // The set's cone of lane `lane` (set-wide index; lanes of a cone are consecutive).
 CONE_FN int cone_laneCone(int lane, int lanesPerCone) { return lane / max(lanesPerCone, 1); }
 

@@ -2,6 +2,7 @@
 
 #include "cone/cone_set.h"
 #include "cone/cone_shared.h"
+#include "voxelize/voxel_settings.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -12,6 +13,15 @@ namespace {
 void require(bool ok, const std::string& what) {
     if (!ok) throw InternalError("ConeSettings", what);
 }
+
+// vct.preset=converge's cone settings, the march of docs/convergence.md's tables whose voxel
+// error falls with the voxels: each cone marched as auto lanes of base 16 ((res / 16)^2 lanes,
+// their footprint a fixed number of voxels), the directional levels sharpened along their axis
+// (no trilinear leak through a one-voxel sheet), the lanes aimed at their rays' points at R, and
+// texels of a quarter of the footprint (the tent no wider than the lane).
+constexpr int kConvergeLanesBase = 16;
+constexpr float kConvergeSharpen = 4.f;
+constexpr float kConvergeLevelBias = -2.f;
 }  // namespace
 
 float defaultConeAperture(int coneCount) {
@@ -60,6 +70,13 @@ ConeLanes coneMarchLanes(const ConeSettings& s, int maxResolution) {
 const SettingsTable<ConeSettings>& coneSettings() {
     static const auto table =
         SettingsTable<ConeSettings>()
+            .derive([](ConeSettings& s, const ParamMap& p) {
+                if (readVctPreset(p) != VctPreset::Converge) return;
+                s.lanes = 0;
+                s.sharpen = kConvergeSharpen;
+                s.aim = true;
+                s.levelBias = kConvergeLevelBias;
+            })
             .choice("vct.cones", &ConeSettings::coneCount, {{"6", 6}, {"16", 16}, {"32", 32}, {"64", 64}},
                     "diffuse cone set: 6 (6 x 60 deg, Villegas), or 16, 32, 64 cones of a cosine-stratified spiral "
                     "(50, 35, 25 deg)")
@@ -91,6 +108,10 @@ const SettingsTable<ConeSettings>& coneSettings() {
                      "and solid angle shared); 0 = auto, (voxel res / vct.lanes-base)^2, so a lane's footprint stays "
                      "the same number of voxels as the grid refines and the march converges to the cone's exact "
                      "visibility (cost grows with the lanes)")
+            .derive([](ConeSettings& s, const ParamMap& p) {
+                // The preset's base is auto's: lanes given on their own keep the default base.
+                if (readVctPreset(p) == VctPreset::Converge && s.lanes == 0) s.lanesBase = kConvergeLanesBase;
+            })
             .integer("vct.lanes-base", &ConeSettings::lanesBase, gpu::CONE_LANES_BASE_MIN, gpu::CONE_LANES_BASE_MAX,
                      "with vct.lanes=0: the resolution at which a cone is marched whole; auto gives (voxel res / "
                      "this)^2 lanes per cone. 32 keeps a 6-cone lane's footprint at R about 4.6 voxels; 16 marches "
@@ -168,6 +189,12 @@ const SettingsTable<ConeSettings>& coneSettings() {
                 if (s.opacity == ConeOpacity::Depth && !s.anisotropic)
                     throw UsageError("--param vct.opacity=depth: optical depth is held by the directional levels; it "
                                      "needs vct.aniso=1");
+            })
+            .derive([](const ConeSettings& s, const ParamMap& p) {
+                if (readVctPreset(p) == VctPreset::Converge && s.sharpen > 1.f && !s.anisotropic &&
+                    !p.has("vct.sharpen"))
+                    throw UsageError("--param vct.preset=converge: it sharpens the directional levels "
+                                     "(vct.sharpen=4), and vct.aniso=0 has none; add --param vct.sharpen=1");
             })
             .check([](const ConeSettings& s) {
                 if (s.sharpen > 1.f && !s.anisotropic)

@@ -87,6 +87,13 @@ public:
         mReaders.push_back(std::move(reader));
         return *this;
     }
+    // A reader with no key of its own, run where it stands among the others: it sets fields
+    // from keys another table documents (a preset's values, which the keys read after it
+    // then override), or checks fields against what the user gave. No doc line.
+    SettingsTable& derive(std::function<void(T&, const ParamMap&)> reader) {
+        mReaders.push_back(std::move(reader));
+        return *this;
+    }
     // A rule across fields, checked after every key is read; throws UsageError.
     SettingsTable& check(std::function<void(const T&)> rule) {
         mReaders.push_back([rule](T& s, const ParamMap&) { rule(s); });

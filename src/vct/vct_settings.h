@@ -10,6 +10,9 @@
 namespace vct {
 
 struct VctSettings {
+    // vct.preset: default, or converge (voxelize/voxel_settings.h, VctPreset; the values it
+    // sets are read by each table that holds them).
+    std::string preset = "default";
     // Which part of the scene the voxels cover: scene, fit (the visible points grown by R),
     // or auto (fit for --ao vct without --gi vct, else scene). See vct/voxel_region.h.
     std::string region = "auto";

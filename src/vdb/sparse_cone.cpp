@@ -59,6 +59,7 @@ enum class Gatherer {
 // One thread's view of the levels: the volume of gpu::cone_marchVolume.
 struct LevelSampler {
     const MarchParams* mp;
+    Gatherer gatherer;
     std::vector<std::unique_ptr<OpacityAcc>> opacity;
     std::vector<std::unique_ptr<RadianceAcc>> radiance;  // empty for AO
     std::vector<std::unique_ptr<RadianceAcc>> normal;    // GI only: normal levels (facing test)
@@ -77,14 +78,14 @@ struct LevelSampler {
     std::unique_ptr<openvdb::tree::ValueAccessor<const openvdb::UInt32Tree>> sheetExtents;  // its extent bits
 
     LevelSampler(const SparseVoxelScene& v, const MarchParams& params, Gatherer who)
-        : mp(&params), depth(v.depthLevels), directionalFetches(v.injected() ? 3.0 : 1.0) {
-        const bool gi = who != Gatherer::PixelAO;
+        : mp(&params), gatherer(who), depth(v.depthLevels), directionalFetches(v.injected() ? 3.0 : 1.0) {
+        const bool gi = gatherer != Gatherer::PixelAO;
         for (const auto& g : v.opacityLevels) opacity.push_back(std::make_unique<OpacityAcc>(g->tree()));
         if (gi) {
             for (const auto& g : v.radianceLevels) radiance.push_back(std::make_unique<RadianceAcc>(g->tree()));
             for (const auto& g : v.normalLevels) normal.push_back(std::make_unique<RadianceAcc>(g->tree()));
         }
-        if (who != Gatherer::Bounce && readsSheets(v)) {
+        if (gatherer != Gatherer::Bounce && readsSheets(v)) {
             sheets = std::make_unique<RadianceAcc>(v.sheet->tree());
             sheetExtents = std::make_unique<openvdb::tree::ValueAccessor<const openvdb::UInt32Tree>>(*v.sheetExtent);
         }
@@ -319,8 +320,8 @@ Gather gather(LevelSampler& sampler, const SparseVoxelScene& v,
               float sky, std::vector<SparseLane>* lanes = nullptr) {
     const glm::vec3 p = glm::vec3(v.voxelFromWorld * glm::vec4(pWorld, 1.f));
     float offset = sampler.mp->offset;
-    if (sampler.sheets && !sampler.radiance.empty()) {  // GI over sheets: gpu::cone_sheetStartOffset
-        sampler.fetches += 27.0;
+    if (sampler.gatherer == Gatherer::PixelGI && sampler.sheets) {  // GI over sheets: gpu::cone_sheetStartOffset
+        sampler.fetches += gpu::CONE_SHEET_START_FETCHES;
         offset = gpu::cone_sheetStartOffset(sampler, p, ng, offset);
     }
     return gatherVoxel(sampler, p, n, ng, offset, offset, maxDist, falloff, sky, lanes);

@@ -2,9 +2,18 @@
 
 namespace vct {
 
+VctPreset readVctPreset(const ParamMap& params) {
+    return params.getChoice(kVctPresetKey, "default", {"default", "converge"}) == "converge" ? VctPreset::Converge
+                                                                                            : VctPreset::Default;
+}
+
 const SettingsTable<VoxelSettings>& voxelSettings() {
     static const auto table =
         SettingsTable<VoxelSettings>()
+            .derive([](VoxelSettings& s, const ParamMap& p) {
+                // vct.preset=converge: the lanes meet sheets where they lie.
+                if (readVctPreset(p) == VctPreset::Converge) s.edges = VoxelEdges::Sheet;
+            })
             .choice("vct.voxel.precision", &VoxelSettings::precision,
                     {{"auto", VoxelPrecision::Auto}, {"half", VoxelPrecision::Half}, {"float", VoxelPrecision::Float}},
                     "storage of emission/radiance: half (RGBA16F, clamps at 65504), float (RGBA32F), auto = float "

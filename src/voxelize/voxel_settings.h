@@ -25,4 +25,17 @@ struct VoxelSettings {
 };
 const SettingsTable<VoxelSettings>& voxelSettings();
 
+// vct.preset: a named set of VCT settings across the voxels', the cones' and the region's
+// tables. Each of those tables puts the preset's values in before it reads its own keys, so a
+// key given on its own overrides the preset; the VCT method's table (vct/vct_settings.cpp)
+// documents the key and checks what the preset cannot serve. Declared here, the lowest layer
+// whose settings a preset sets.
+enum class VctPreset {
+    Default,   // every key's own default
+    Converge,  // the march whose voxel error falls with the voxels (docs/convergence.md)
+};
+inline constexpr const char* kVctPresetKey = "vct.preset";
+// The preset `params` names (Default when none); a name outside the list is a UsageError.
+VctPreset readVctPreset(const ParamMap& params);
+
 }  // namespace vct
