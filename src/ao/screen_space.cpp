@@ -44,6 +44,7 @@ Method screenSpaceMethod(const ScreenSpaceAo& ao) {
         for (const SettingDoc& d : aoFilterSettings().docs()) docs.push_back(d);
         return docs;
     };
+    m.presetValues = ao.presetValues;
     m.programs = [ao] {
         std::vector<ProgramKey> keys = ao.programs;
         for (const ProgramKey& k : screenSpaceFilterPrograms()) keys.push_back(k);

@@ -31,6 +31,8 @@ struct ScreenSpaceAo {
     bool noiseTile = false;  // a 4x4 rotation tile that the box blur undoes (ssao-crytek, -hemisphere)
     // The estimator's keys (its settings table's docs).
     std::function<std::vector<SettingDoc>()> settings;
+    // Method::presetValues: the values its presets give the keys they set; empty: none.
+    std::function<std::map<std::string, std::string>(const ParamMap& params)> presetValues;
     // One evaluation at ctx's resolution (R32F). `filtered`: a blur or upsample follows, so
     // values above 1 may be kept for it.
     std::function<GlTexture(const AoPassContext& ctx, const ParamMap& params, bool filtered)> evaluate;

@@ -144,6 +144,10 @@ struct Method {
     // comparisons split its error into the cone set's and the voxels'.
     bool tracesCones = false;
     std::function<std::vector<SettingDoc>()> settings;  // every --param key it reads
+    // The values the presets `params` names (gtao.preset, vct.preset) give the keys they set,
+    // as --param would write them: what a record holds for a key the user did not give, where
+    // the settings' default text ("the preset's") is not a value. Empty: no presets.
+    std::function<std::map<std::string, std::string>(const ParamMap& params)> presetValues;
     std::function<std::vector<ProgramKey>()> programs;  // every GL program it can build
     std::function<void(const PlanContext&, PassDeclarations&)> declare;
     std::function<void(MethodContext&)> execute;

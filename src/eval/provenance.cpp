@@ -44,6 +44,9 @@ nlohmann::json resolvedParams(MethodKind kind, const std::string& method, const 
     const Method* m = findMethod(kind, method);
     if (!m || !m->settings) return out;
     for (const SettingDoc& d : m->settings()) out[d.key] = params.has(d.key) ? params.values().at(d.key) : d.defaultValue;
+    if (m->presetValues)
+        for (const auto& [key, value] : m->presetValues(params))
+            if (!params.has(key)) out[key] = value;
     return out;
 }
 

@@ -20,8 +20,8 @@ std::string buildCommit();
 // it cannot be read.
 std::string fileSha256(const std::string& path);
 
-// Every setting of `method` (kind, name): the value `params` gives, else its default as
-// `--help-params` states it (a value, or the rule that derives it, e.g. "the preset's").
+// Every setting of `method` (kind, name): the value `params` gives, else the value a preset
+// in `params` gives it (Method::presetValues), else its default as `--help-params` states it.
 nlohmann::json resolvedParams(MethodKind kind, const std::string& method, const ParamMap& params);
 
 // {commit, scene, scene_sha256, seed}: what every record of one comparison shares

@@ -207,6 +207,7 @@ Method makeVctMethod(MethodKind kind) {
               {{"voxel_opacity", 1, "voxel grid opacity, ray-marched from the camera"}, kVoxelView}};
     if (!ao) m.aovs.push_back({{"voxel_radiance", 3, "voxel grid radiance, ray-marched from the camera"}, kVoxelView});
     m.settings = vctSettingDocs;
+    m.presetValues = vctPresetValues;
     m.programs = vctPrograms;
     m.declare = [kind](const PlanContext& ctx, PassDeclarations& d) {
         declareVoxelPasses(ctx, d);

@@ -5,20 +5,24 @@
 #include "core/errors.h"
 #include "voxelize/voxel_settings.h"
 
+#include <sstream>
+
 namespace vct {
 
 const SettingsTable<VctSettings>& vctSettings() {
     static const auto table =
         SettingsTable<VctSettings>()
-            .choice(kVctPresetKey, &VctSettings::preset, {{"default", "default"}, {"converge", "converge"}},
+            .choice(kVctPresetKey, &VctSettings::preset,
+                    {{"default", VctPreset::Default}, {"converge", VctPreset::Converge}},
                     "named VCT settings: default = each key's own default (every cone marched whole, Crassin "
                     "2011); converge = the march whose voxel error falls as the voxels refine on the closed-form "
                     "families (docs/convergence.md): vct.lanes=0 with vct.lanes-base=16, vct.sharpen=4, "
                     "vct.aim=1, vct.level-bias=-2, vct.grid=cube, vct.fit-reach=lanes (a fitted region) and "
                     "vct.voxel.edges=sheet. A key given on its own overrides the preset's value. It marches "
-                    "(res / 16)^2 lanes a cone, so it costs far more than default (AO on the "
-                    "overhang scene at 128^3, sparse, 96 px: 146 times the samples, 107 -> 15675 a pixel, and about "
-                    "400 times the cone pass's time); needs directional levels on one dense grid or the sparse backend, not clipmaps")
+                    "(res / 16)^2 lanes a cone, so it costs far more than default (AO on the overhang scene at "
+                    "128^3, sparse, 96 px: 146 times the samples, 107 -> 15675 a pixel, and about 400 times the "
+                    "cone pass's time); needs directional levels on one dense grid or the sparse backend, not "
+                    "clipmaps")
             .choice("vct.region", &VctSettings::region,
                     {{"auto", "auto"}, {"scene", "scene"}, {"fit", "fit"}},
                     "voxel region: scene = whole scene bounds; fit = visible points grown by R (AO); auto = fit "
@@ -26,7 +30,7 @@ const SettingsTable<VctSettings>& vctSettings() {
             .derive([](VctSettings& s, const ParamMap&) {
                 // vct.preset=converge: cubic texels at every level, and a fitted region that
                 // reaches as far as the lanes do (a whole-scene region has nothing to fit).
-                if (s.preset != "converge") return;
+                if (s.preset != VctPreset::Converge) return;
                 s.grid = "cube";
                 if (s.region != "scene") s.fitReach = "lanes";
             })
@@ -52,7 +56,7 @@ const SettingsTable<VctSettings>& vctSettings() {
                      "extent (0 = one dense grid over the region)")
             .integer("vct.view.level", &VctSettings::viewLevel, 0, 16, "mip level shown by voxel_* AOVs")
             .check([](const VctSettings& s) {
-                if (s.preset == "converge" && s.clipmapLevels > 0)
+                if (s.preset == VctPreset::Converge && s.clipmapLevels > 0)
                     throw UsageError("--param vct.preset=converge: its sharpened directional levels need one dense "
                                      "grid or the sparse backend, and clipmaps keep isotropic levels only "
                                      "(vct.clipmap.levels=" + std::to_string(s.clipmapLevels) + ")");
@@ -74,6 +78,28 @@ std::vector<SettingDoc> vctSettingDocs() {
                               &vctSettings().docs()})
         docs.insert(docs.end(), table->begin(), table->end());
     return docs;
+}
+
+std::map<std::string, std::string> vctPresetValues(const ParamMap& params) {
+    if (readVctPreset(params) == VctPreset::Default) return {};
+    const ConeSettings cone = readConeSettings(params);
+    const VctSettings vs = vctSettings().read(params);
+    const VoxelEdges edges = voxelSettings().read(params).edges;
+    auto text = [](float v) {
+        std::ostringstream s;
+        s << v;
+        return s.str();
+    };
+    return {{"vct.lanes", std::to_string(cone.lanes)},
+            {"vct.lanes-base", std::to_string(cone.lanesBase)},
+            {"vct.sharpen", text(cone.sharpen)},
+            {"vct.aim", cone.aim ? "1" : "0"},
+            {"vct.level-bias", text(cone.levelBias)},
+            {"vct.grid", vs.grid},
+            {"vct.fit-reach", vs.fitReach},
+            {"vct.voxel.edges", edges == VoxelEdges::Sheet      ? "sheet"
+                                : edges == VoxelEdges::Coverage ? "coverage"
+                                                                : "occupied"}};
 }
 
 }  // namespace vct

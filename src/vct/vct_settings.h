@@ -3,16 +3,18 @@
 #pragma once
 
 #include "core/settings.h"
+#include "voxelize/voxel_settings.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
 namespace vct {
 
 struct VctSettings {
-    // vct.preset: default, or converge (voxelize/voxel_settings.h, VctPreset; the values it
-    // sets are read by each table that holds them).
-    std::string preset = "default";
+    // vct.preset (voxelize/voxel_settings.h): the values it sets are read by each table that
+    // holds them; this one documents it and refuses what it cannot serve.
+    VctPreset preset = VctPreset::Default;
     // Which part of the scene the voxels cover: scene, fit (the visible points grown by R),
     // or auto (fit for --ao vct without --gi vct, else scene). See vct/voxel_region.h.
     std::string region = "auto";
@@ -33,5 +35,9 @@ const SettingsTable<VctSettings>& vctSettings();
 
 // Every key a VCT render reads: the cones', bounces', voxels' and the settings above.
 std::vector<SettingDoc> vctSettingDocs();
+
+// Method::presetValues of the VCT methods: the value of every key vct.preset sets, as the
+// tables read it from `params` (a key given on its own keeps its own); empty without a preset.
+std::map<std::string, std::string> vctPresetValues(const ParamMap& params);
 
 }  // namespace vct

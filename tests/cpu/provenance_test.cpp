@@ -36,3 +36,29 @@ TEST(Provenance, EverySettingResolved) {
     EXPECT_EQ(v["vct.lanes"], "1");
     EXPECT_TRUE(resolvedParams(MethodKind::AO, "no-such-method", ParamMap()).empty());
 }
+
+// A preset's keys are recorded with the values it gave them, a key given on its own with its own.
+TEST(Provenance, PresetsRecordTheValuesTheyGive) {
+    ParamMap low;
+    low.set("gtao.preset=low");
+    const nlohmann::json g = resolvedParams(MethodKind::AO, "gtao", low);
+    EXPECT_EQ(g["gtao.slices"], "1");  // XeGTAO's low: 1 slice of 2 steps a side
+    EXPECT_EQ(g["gtao.steps"], "2");
+    ParamMap converge;
+    converge.set("vct.preset=converge");
+    converge.set("vct.sharpen=2");
+    for (MethodKind kind : {MethodKind::AO, MethodKind::GI}) {
+        const nlohmann::json v = resolvedParams(kind, "vct", converge);
+        EXPECT_EQ(v["vct.preset"], "converge");
+        EXPECT_EQ(v["vct.lanes"], "0");
+        EXPECT_EQ(v["vct.lanes-base"], "16");
+        EXPECT_EQ(v["vct.aim"], "1");
+        EXPECT_EQ(v["vct.level-bias"], "-2");
+        EXPECT_EQ(v["vct.grid"], "cube");
+        EXPECT_EQ(v["vct.fit-reach"], "lanes");
+        EXPECT_EQ(v["vct.voxel.edges"], "sheet");
+        EXPECT_EQ(v["vct.sharpen"], "2");
+        EXPECT_EQ(v["vct.cones"], "6");
+    }
+    EXPECT_EQ(resolvedParams(MethodKind::AO, "vct", ParamMap())["vct.sharpen"], "1");
+}

@@ -69,6 +69,11 @@ const ScreenSpaceAo& gtaoEstimator() {
         s.name = "gtao";
         s.summary = "ground-truth-based AO (Jimenez et al. 2016, after XeGTAO)";
         s.settings = [] { return gtaoSettings().docs(); };
+        s.presetValues = [](const ParamMap& params) {
+            const GtaoSettings g = gtaoSettings().read(params);
+            return std::map<std::string, std::string>{{"gtao.slices", std::to_string(g.slices)},
+                                                      {"gtao.steps", std::to_string(g.steps)}};
+        };
         s.readsAlbedo = [](const ParamMap& params) { return gtaoSettings().read(params).multiBounce; };
         s.evaluate = [](const AoPassContext& ctx, const ParamMap& params, bool filtered) {
             return runGtao(ctx, gtaoSettings().read(params), filtered);
